@@ -1,0 +1,56 @@
+"""The ``archdem`` command-line program.
+
+Each sub-command lives in its own module of this package and exposes
+``register(subparsers)``; the module adds its parser and sets ``func`` (a
+callable taking the parsed namespace and returning an exit code).
+Bad input raises :class:`specimens.errors.ArchdemInputError`, which becomes one
+line on stderr and exit code 2.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from specimens.errors import ArchdemInputError
+
+# Sub-command modules, in the order they appear in ``archdem --help``.
+_COMMANDS = [
+    "specimens_cmd",
+    "demo_cmd",
+]
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that reports usage errors in one line with exit code 2."""
+
+    def error(self, message: str) -> None:  # pragma: no cover - argparse hook
+        self.exit(2, f"archdem: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="archdem", description=__doc__.splitlines()[0])
+    from importlib.metadata import version
+
+    parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    for name in _COMMANDS:
+        importlib.import_module(f"dem.cli.{name}").register(sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except ArchdemInputError as exc:
+        print(f"archdem: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("archdem: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,5 @@
+import sys
+
+from dem.cli import main
+
+sys.exit(main())

@@ -1,0 +1,353 @@
+"""Discretisation of a pointed arch into voussoirs, crown and rigid bodies (spec 01 §1.2).
+
+Naming, from the left springing to the right springing:
+
+* joints ``L0`` (left base), ``L1`` ... ``Ln``, ``Rn`` ... ``R1``, ``R0`` (right base); the joint
+  ``Lk``/``Rk`` lies at polar angle ``psi_k = k D`` of its half;
+* blocks ``L1`` ... ``Ln`` (voussoir ``Lk`` between joints ``L(k-1)`` and ``Lk``), ``C`` (crown),
+  ``Rn`` ... ``R1``;
+* bodies: in the ``free`` configuration one body per block; in the ``glued`` one the
+  voussoirs ``Ln`` and ``Rn`` are bonded to the crown (body ``C``) and joints ``Ln``/``Rn`` vanish.
+
+Bodies and joints are listed left to right; a joint joins body ``a`` (left) and body ``b``
+(right), ``-1`` meaning the base; its ``normal`` is the unit tangent of the arch at the joint,
+pointing from ``a`` to ``b``.
+
+Block shapes: ``linearised`` (flat faces through the joint corners, the default: the
+specimens were sawn) or ``curved`` (arcs polygonised with ``segments`` chords per voussoir).
+Non-convex blocks are described as compounds of convex pieces, never as their hull.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Literal
+
+import numpy as np
+
+from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
+from specimens.sections import SectionProperties, is_convex, polygon_properties, signed_area
+
+Shape = Literal["linearised", "curved"]
+Config = Literal["glued", "free"]
+DEFAULT_DENSITY = 500.0  # kg/m^3, autoclaved aerated concrete (spec 01 §1.3)
+DEFAULT_VOUSSOIRS = 8
+
+
+@dataclass(frozen=True)
+class Block:
+    """One sawn block: outline (counter-clockwise, ``(n, 2)`` m) and its convex pieces."""
+
+    name: str
+    outline: np.ndarray
+    pieces: tuple[np.ndarray, ...]
+    intrados: np.ndarray  # intrados polyline, left to right
+    extrados: np.ndarray  # extrados polyline, left to right
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body of the assembly: one block, or several bonded blocks (glued crown).
+
+    Mass properties are exact for the body's own (polygonal) outline; ``inertia`` is the
+    centroidal 3x3 tensor [kg m^2] in the frame x (horizontal), y (up), z (out of plane).
+    """
+
+    index: int
+    name: str
+    blocks: tuple[str, ...]
+    outline: np.ndarray
+    pieces: tuple[np.ndarray, ...]
+    section: SectionProperties
+    mass: float
+    inertia: np.ndarray
+
+    @property
+    def centroid(self) -> np.ndarray:
+        return self.section.centroid
+
+    @property
+    def area(self) -> float:
+        return self.section.area
+
+    @property
+    def I_z(self) -> float:
+        """In-plane (about z) centroidal moment of inertia [kg m^2]."""
+        return float(self.inertia[2, 2])
+
+
+@dataclass(frozen=True)
+class Joint:
+    """An interface between two bodies (or a body and the base, index ``-1``).
+
+    ``p_i`` / ``p_e``: end points at the intrados / extrados [m]; ``normal``: unit vector
+    from body ``a`` to body ``b``; ``psi``: polar angle of the radial cut [rad].
+    """
+
+    index: int
+    name: str
+    a: int
+    b: int
+    p_i: np.ndarray
+    p_e: np.ndarray
+    normal: np.ndarray
+    psi: float
+
+    @property
+    def is_base(self) -> bool:
+        return self.a < 0 or self.b < 0
+
+    @property
+    def length(self) -> float:
+        return float(np.linalg.norm(self.p_e - self.p_i))
+
+    @property
+    def tangent(self) -> np.ndarray:
+        """Unit vector along the joint from the intrados end to the extrados end."""
+        d = self.p_e - self.p_i
+        return d / np.linalg.norm(d)
+
+    @property
+    def side(self) -> int:
+        """-1 for a joint on the left half, +1 on the right half."""
+        return -1 if self.name.startswith("L") else 1
+
+
+@dataclass(frozen=True)
+class Assembly:
+    """The discretised arch: bodies and joints of one configuration."""
+
+    arch: PointedArch
+    config: Config
+    shape: Shape
+    n_voussoirs: int
+    crown_fraction: float
+    density: float
+    segments: int
+    blocks: tuple[Block, ...]
+    bodies: tuple[Body, ...]
+    joints: tuple[Joint, ...]
+    joint_angles: np.ndarray = field(repr=False)
+
+    @property
+    def n_bodies(self) -> int:
+        return len(self.bodies)
+
+    @property
+    def total_mass(self) -> float:
+        return float(sum(b.mass for b in self.bodies))
+
+    @cached_property
+    def centroid(self) -> np.ndarray:
+        m = np.array([b.mass for b in self.bodies])
+        return (m[:, None] * np.array([b.centroid for b in self.bodies])).sum(0) / m.sum()
+
+    def joint(self, name: str) -> Joint:
+        for j in self.joints:
+            if j.name == name:
+                return j
+        raise KeyError(name)
+
+    def body(self, name: str) -> Body:
+        for b in self.bodies:
+            if b.name == name:
+                return b
+        raise KeyError(name)
+
+    @property
+    def crown_body(self) -> Body:
+        return self.body("C")
+
+    def parameters(self) -> dict:
+        """The discretisation parameters, for result files."""
+        return {
+            "config": self.config, "shape": self.shape, "n_voussoirs": self.n_voussoirs,
+            "crown_fraction": self.crown_fraction, "density": self.density, "segments": self.segments,
+        }
+
+
+def joint_angles(arch: PointedArch, n_voussoirs: int = DEFAULT_VOUSSOIRS, crown_fraction: float = 1.0) -> np.ndarray:
+    """Polar angles ``psi_k``, k = 0..n, of the joints of one half [rad].
+
+    Each half is cut into ``n + crown_fraction/2`` equal angular parts at the intrados; the
+    crown takes ``crown_fraction/2`` of a part on each side (spec default: 1, so the crown
+    is as wide as a voussoir at the intrados).
+    """
+    D = arch.psi_i / (n_voussoirs + crown_fraction / 2)
+    return D * np.arange(n_voussoirs + 1)
+
+
+def _chain(arch: PointedArch, R: float, psi_a: float, psi_b: float, shape: Shape, segments: int) -> np.ndarray:
+    """Points of the right-half profile of radius ``R`` from ``psi_a`` to ``psi_b``."""
+    n = 1 if shape == "linearised" else segments
+    return arch.point(np.linspace(psi_a, psi_b, n + 1), R)
+
+
+def _mirror(p: np.ndarray) -> np.ndarray:
+    q = np.array(p, dtype=float, copy=True)
+    q[..., 0] *= -1
+    return q
+
+
+def _ccw(poly: np.ndarray) -> np.ndarray:
+    poly = np.asarray(poly, dtype=float)
+    return poly if signed_area(poly) > 0 else poly[::-1].copy()
+
+
+def _dedupe(points: list[np.ndarray]) -> np.ndarray:
+    pts = np.vstack(points)
+    keep = [0]
+    for k in range(1, len(pts)):
+        if np.linalg.norm(pts[k] - pts[keep[-1]]) > 1e-12:
+            keep.append(k)
+    return pts[keep]
+
+
+def _right_blocks(arch: PointedArch, psi: np.ndarray, shape: Shape, segments: int):
+    """Right-half voussoirs (k = 1..n) and the right half of the crown, ordered by psi.
+
+    Each as (intrados chain, extrados chain, convex pieces), chains in increasing psi.
+    """
+    out = []
+    for k in range(1, len(psi)):
+        ci = _chain(arch, arch.Ri, psi[k - 1], psi[k], shape, segments)
+        ce = _chain(arch, arch.Re, psi[k - 1], psi[k], shape, segments)
+        pieces = [_ccw(np.array([ci[j], ci[j + 1], ce[j + 1], ce[j]])) for j in range(len(ci) - 1)]
+        out.append((ci, ce, pieces))
+    # crown half: from the last joint to the axis
+    pn = psi[-1]
+    aI, aE = arch.apex_intrados, arch.apex_extrados
+    if shape == "linearised":
+        ci = np.array([arch.point(pn, arch.Ri), aI])
+        ce = np.array([arch.point(pn, arch.Re), aE])
+        pieces = [_ccw(np.array([ci[0], ci[1], ce[1], ce[0]]))]
+    else:
+        m = max(1, int(math.ceil(segments * (arch.psi_i - pn) / max(psi[1] - psi[0], 1e-12))))
+        s = np.linspace(pn, arch.psi_i, m + 1)
+        ci = arch.point(s, arch.Ri)
+        ce_main = arch.point(s, arch.Re)
+        pieces = [_ccw(np.array([ci[j], ci[j + 1], ce_main[j + 1], ce_main[j]])) for j in range(m)]
+        # keystone corner: beyond the radial cut through the intrados apex, up to the axis
+        m2 = max(2, int(math.ceil(segments * (arch.psi_e - arch.psi_i) / max(psi[1] - psi[0], 1e-12))))
+        tail = arch.point(np.linspace(arch.psi_i, arch.psi_e, m2 + 1), arch.Re)
+        tail[-1] = aE  # exact apex
+        pieces.append(_ccw(np.vstack([aI[None, :], tail])))
+        ci[-1] = aI
+        ce = np.vstack([ce_main, tail[1:]])
+    out.append((ci, ce, pieces))
+    return out
+
+
+def discretise(
+    arch: PointedArch,
+    n_voussoirs: int = DEFAULT_VOUSSOIRS,
+    crown_fraction: float = 1.0,
+    shape: Shape = "linearised",
+    config: Config = "glued",
+    density: float = DEFAULT_DENSITY,
+    segments: int = 4,
+) -> Assembly:
+    """Cut ``arch`` into ``n_voussoirs`` voussoirs per side plus a crown (spec 01 §1.2).
+
+    ``density`` in kg/m^3; ``segments`` = chords per voussoir for the curved shape.
+    """
+    if not isinstance(n_voussoirs, (int, np.integer)) or n_voussoirs < 1:
+        raise ArchdemInputError(f"number of voussoirs per side must be an integer >= 1, got {n_voussoirs!r}")
+    if not (math.isfinite(crown_fraction) and crown_fraction > 0):
+        raise ArchdemInputError(f"crown width fraction must be > 0, got {crown_fraction!r}")
+    if shape not in ("linearised", "curved"):
+        raise ArchdemInputError(f"block shape must be 'linearised' or 'curved', got {shape!r}")
+    if config not in ("glued", "free"):
+        raise ArchdemInputError(f"configuration must be 'glued' or 'free', got {config!r}")
+    if not (math.isfinite(density) and density > 0):
+        raise ArchdemInputError(f"density must be > 0 kg/m^3, got {density!r}")
+    if segments < 1:
+        raise ArchdemInputError(f"segments per voussoir must be >= 1, got {segments!r}")
+    if config == "glued" and n_voussoirs < 2:
+        raise ArchdemInputError("the glued configuration needs at least 2 voussoirs per side")
+
+    psi = joint_angles(arch, n_voussoirs, crown_fraction)
+    n = n_voussoirs
+    right = _right_blocks(arch, psi, shape, segments)
+
+    # blocks left to right: L1..Ln, C, Rn..R1; chains left to right
+    blocks: list[Block] = []
+    for k in range(1, n + 1):  # left voussoirs: mirror of right k, psi increasing = left to right
+        ci, ce, pieces = right[k - 1]
+        ci_l, ce_l = _mirror(ci), _mirror(ce)
+        outline = _ccw(np.vstack([ci_l, ce_l[::-1]]))
+        blocks.append(Block(f"L{k}", outline, tuple(_ccw(_mirror(p)) for p in pieces), ci_l, ce_l))
+    ci, ce, pieces = right[n]
+    crown_i = _dedupe([_mirror(ci), ci[::-1]])
+    crown_e = _dedupe([_mirror(ce), ce[::-1]])
+    crown_outline = _ccw(np.vstack([crown_i, crown_e[::-1]]))
+    crown_pieces = tuple(_ccw(_mirror(p)) for p in pieces) + tuple(pieces)
+    blocks.append(Block("C", crown_outline, crown_pieces, crown_i, crown_e))
+    for k in range(n, 0, -1):
+        ci, ce, pieces = right[k - 1]
+        outline = _ccw(np.vstack([ci[::-1], ce]))
+        blocks.append(Block(f"R{k}", outline, tuple(pieces), ci[::-1].copy(), ce[::-1].copy()))
+
+    for b in blocks:
+        for p in b.pieces:
+            if not is_convex(p):  # pragma: no cover - a geometry bug, not user input
+                raise AssertionError(f"piece of block {b.name} is not convex")
+
+    # bodies
+    groups: list[list[int]]
+    if config == "free":
+        groups = [[i] for i in range(len(blocks))]
+    else:
+        groups = [[i] for i in range(n - 1)] + [[n - 1, n, n + 1]] + [[i] for i in range(n + 2, 2 * n + 1)]
+    bodies: list[Body] = []
+    for idx, g in enumerate(groups):
+        members = [blocks[i] for i in g]
+        ci = _dedupe([m.intrados for m in members])
+        ce = _dedupe([m.extrados for m in members])
+        outline = _ccw(np.vstack([ci, ce[::-1]]))
+        sec = polygon_properties(outline)
+        name = "C" if any(m.name == "C" for m in members) else members[0].name
+        bodies.append(_make_body(idx, name, tuple(m.name for m in members), outline,
+                                 tuple(p for m in members for p in m.pieces), sec, density, arch.width))
+
+    # joints left to right
+    body_of_block = {blocks[i].name: bi for bi, g in enumerate(groups) for i in g}
+    joints: list[Joint] = []
+
+    def add(name: str, a: int, b: int, side: int, k: int) -> None:
+        p_i = arch.point(psi[k], arch.Ri, side)
+        p_e = arch.point(psi[k], arch.Re, side)
+        s = math.sin(psi[k])
+        c = math.cos(psi[k])
+        normal = np.array([s, c]) if side < 0 else np.array([s, -c])
+        joints.append(Joint(len(joints), name, a, b, p_i, p_e, normal, float(psi[k])))
+
+    left_names = [f"L{k}" for k in range(1, n + 1)] + ["C"]
+    for k in range(0, n + 1):  # joint Lk between block L(k) (or base) and L(k+1) (or crown)
+        a = -1 if k == 0 else body_of_block[f"L{k}"]
+        b = body_of_block[left_names[k]]
+        if a != b:
+            add(f"L{k}", a, b, -1, k)
+    right_names = ["C"] + [f"R{k}" for k in range(n, 0, -1)]
+    for k in range(n, -1, -1):
+        a = body_of_block[right_names[n - k]]
+        b = -1 if k == 0 else body_of_block[f"R{k}"]
+        if a != b:
+            add(f"R{k}", a, b, +1, k)
+
+    return Assembly(arch, config, shape, int(n_voussoirs), float(crown_fraction), float(density), int(segments),
+                    tuple(blocks), tuple(bodies), tuple(joints), psi)
+
+
+def _make_body(index, name, block_names, outline, pieces, sec: SectionProperties, density: float, width: float) -> Body:
+    mass = density * width * sec.area
+    # prism of depth `width` along z, centred on z = 0
+    rho_w = density * width
+    Ixx = rho_w * sec.Ixx + mass * width**2 / 12.0
+    Iyy = rho_w * sec.Iyy + mass * width**2 / 12.0
+    Izz = rho_w * sec.polar
+    Ixy = -rho_w * sec.Ixy
+    inertia = np.array([[Ixx, Ixy, 0.0], [Ixy, Iyy, 0.0], [0.0, 0.0, Izz]])
+    return Body(index, name, block_names, outline, pieces, sec, float(mass), inertia)

@@ -1,0 +1,83 @@
+"""The catalogue of the 11 reduced-scale AAC specimens and the full-scale parametric set.
+
+Spec 01 §1.3-1.4. All catalogue arches have ``Rc = 0.200 m`` and width 0.100 m.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
+
+REFERENCE_MU_JOINT = 0.577  # tan 30 deg, block-block (spec 01 §1.3)
+REFERENCE_MU_BASE = 1.0  # tan 45 deg, last block-base
+SPECIMEN_WIDTH = 0.100  # m
+
+# id, Ri, Re, e  [mm]
+_TABLE = [
+    ("Sh02-Sd015", 222, 258, 40),
+    ("Sh02-Sd020", 216, 264, 40),
+    ("Sh02-Sd025", 210, 270, 40),
+    ("Sh06-Sd010", 304, 336, 120),
+    ("Sh06-Sd015", 296, 344, 120),
+    ("Sh06-Sd020", 288, 352, 120),
+    ("Sh06-Sd025", 280, 360, 120),
+    ("Sh1-Sd010", 380, 420, 200),
+    ("Sh1-Sd015", 370, 430, 200),
+    ("Sh1-Sd020", 360, 440, 200),
+    ("Sh1-Sd025", 350, 450, 200),
+]
+
+
+@dataclass(frozen=True)
+class Specimen:
+    """A catalogue specimen: its id and arch (SI units)."""
+
+    id: str
+    arch: PointedArch
+
+
+CATALOGUE: tuple[Specimen, ...] = tuple(
+    Specimen(sid, PointedArch.from_radii(Ri / 1000, Re / 1000, e / 1000, width=SPECIMEN_WIDTH))
+    for sid, Ri, Re, e in _TABLE
+)
+SPECIMEN_IDS: tuple[str, ...] = tuple(s.id for s in CATALOGUE)
+
+
+def get_specimen(specimen_id: str) -> Specimen:
+    """The catalogue specimen ``specimen_id`` (exact id, e.g. ``Sh06-Sd015``)."""
+    for s in CATALOGUE:
+        if s.id == specimen_id:
+            return s
+    raise ArchdemInputError(f"unknown specimen {specimen_id!r}; valid ids: {', '.join(SPECIMEN_IDS)}")
+
+
+def select_specimens(spec: str) -> list[Specimen]:
+    """``all`` or a comma-separated list of ids."""
+    if spec.strip() == "all":
+        return list(CATALOGUE)
+    return [get_specimen(s.strip()) for s in spec.split(",") if s.strip()]
+
+
+FULL_SCALE_SPANS = (5.0, 10.0, 20.0)  # 2 Rc [m]
+FULL_SCALE_SH = (0.2, 0.6, 1.0)
+FULL_SCALE_SD = (0.10, 0.15, 0.20, 0.25)
+
+
+def full_scale_set(
+    spans: tuple[float, ...] = FULL_SCALE_SPANS,
+    sharpness: tuple[float, ...] = (0.0,) + FULL_SCALE_SH,
+    slenderness: tuple[float, ...] = FULL_SCALE_SD,
+    width: float = 1.0,
+) -> list[Specimen]:
+    """The parametric set of full-scale arches (spec 01 §1.4): span = 2 Rc.
+
+    Default: 3 spans x 4 sharpness values (round arch included) x 4 slenderness values = 48.
+    """
+    out = []
+    for span in spans:
+        for sh in sharpness:
+            for sd in slenderness:
+                arch = PointedArch.from_ratios(sh, sd, span / 2, width=width)
+                out.append(Specimen(f"L{span:g}-Sh{sh:g}-Sd{sd:g}", arch))
+    return out
