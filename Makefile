@@ -18,7 +18,7 @@ $(STAMP): $(BIN)/python pyproject.toml
 venv: $(STAMP)
 
 demo: $(STAMP)
-	$(BIN)/archdem demo --out runs/demo
+	$(BIN)/archdem campaign --quick --out runs/demo
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

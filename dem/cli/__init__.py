@@ -17,7 +17,7 @@ from specimens.errors import ArchdemInputError
 # Sub-command modules, in the order they appear in ``archdem --help``.
 _COMMANDS = [
     "specimens_cmd",
-    "demo_cmd",
+    "campaign_cmd",
 ]
 
 

@@ -1,0 +1,45 @@
+"""``archdem campaign``: the virtual test campaign (the main job of ``make demo``)."""
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from dem.cli.common import writable_dir
+
+
+def _campaign(args: argparse.Namespace) -> int:
+    from dem.campaign import STEPS, CampaignContext, run_campaign
+    from specimens.catalogue import select_specimens
+
+    specs = select_specimens(args.specimens)
+    out = writable_dir(args.out)
+    ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
+                          quick=args.quick, workers=args.workers)
+    t0 = time.perf_counter()
+    steps = None
+    if args.steps:
+        steps = [s.strip() for s in args.steps.split(",")]
+        unknown = [s for s in steps if s not in STEPS]
+        if unknown:
+            from specimens.errors import ArchdemInputError
+
+            raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(STEPS)}")
+    manifest = run_campaign(ctx, steps)
+    print(f"campaign finished in {time.perf_counter() - t0:.1f} s; results in {out}")
+    report = manifest.get("report")
+    if report:
+        print(f"report: {report}")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
+    p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
+    p.add_argument("--config", choices=("glued", "free"), default="glued")
+    p.add_argument("--engine", default="pybullet")
+    p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
+    p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    p.add_argument("--steps", default=None, help="comma-separated subset of steps")
+    p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")
+    p.set_defaults(func=_campaign)

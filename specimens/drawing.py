@@ -1,0 +1,72 @@
+"""Engineering drawings of arches (matplotlib): blocks, numbered joints, dimensions."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from specimens.blocks import Assembly
+
+
+def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensions: bool = True,
+                  face_colors: list | None = None, joint_colors: dict[str, str] | None = None):
+    """Draw the bodies (grey), the joints (numbered) and the main dimensions [mm] on ``ax``."""
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon
+
+    arch = assembly.arch
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 5.5))
+    for k, body in enumerate(assembly.bodies):
+        fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if body.name != "C" else "#c4a97a")
+        ax.add_patch(Polygon(body.outline * 1000, closed=True, fc=fc, ec="k", lw=0.8))
+    for j in assembly.joints:
+        p = np.array([j.p_i, j.p_e]) * 1000
+        col = (joint_colors or {}).get(j.name, "tab:blue")
+        ax.plot(p[:, 0], p[:, 1], color=col, lw=1.6)
+        # label outside the extrados along the joint direction
+        lab = (j.p_e + 0.35 * arch.t * j.tangent) * 1000
+        if j.is_base:
+            lab = (j.p_i + j.p_e) / 2 * 1000 + np.array([0.0, -0.25 * arch.t * 1000])
+        ax.text(lab[0], lab[1], j.name, ha="center", va="center", fontsize=7, color=col)
+    base_x = (arch.Rc + arch.t) * 1000 * 1.15
+    ax.fill_between([-base_x, base_x], [-0.06 * arch.Rc * 1000] * 2, [0, 0], color="0.8", hatch="//", lw=0)
+    if dimensions:
+        span = arch.span * 1000
+        y = -0.12 * arch.Rc * 1000
+        xi = (arch.Rc - arch.t / 2) * 1000
+        ax.annotate("", xy=(-xi, y), xytext=(xi, y), arrowprops=dict(arrowstyle="<->", lw=0.8))
+        ax.text(0, y * 1.35, f"clear span {span:.0f} mm", ha="center", va="top", fontsize=8)
+        rise = arch.rise * 1000
+        xr = -xi * 0.15
+        ax.annotate("", xy=(xr, 0), xytext=(xr, rise), arrowprops=dict(arrowstyle="<->", lw=0.8))
+        ax.text(xr - 5, rise / 2, f"rise {rise:.0f} mm", ha="right", va="center", fontsize=8, rotation=90)
+        ax.text(0.02, 0.98, f"Ri = {arch.Ri*1000:.0f} mm, Re = {arch.Re*1000:.0f} mm\n"
+                f"e = {arch.e*1000:.0f} mm, t = {arch.t*1000:.0f} mm\n"
+                f"{assembly.config}, {assembly.n_bodies} bodies, {assembly.total_mass:.3f} kg",
+                transform=ax.transAxes, va="top", fontsize=8, family="monospace")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(title or f"Sh = {arch.Sh:.2f}, Sd = {arch.Sd:.2f}")
+    ax.autoscale_view()
+    return ax
+
+
+def save_drawing(assembly: Assembly, path: str | Path, title: str | None = None) -> Path:
+    """Draw ``assembly`` and save it atomically to ``path`` (format from the suffix)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from dem.atomic import atomic_path
+
+    path = Path(path)
+    fig, ax = plt.subplots(figsize=(7, 5.5))
+    draw_assembly(assembly, ax, title=title)
+    fig.tight_layout()
+    with atomic_path(path, overwrite=True) as tmp:
+        fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=130)
+    plt.close(fig)
+    return path

@@ -1,0 +1,167 @@
+import numpy as np
+import pytest
+
+from specimens.blocks import discretise, joint_angles
+from specimens.catalogue import CATALOGUE, get_specimen
+from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
+from specimens.sections import is_convex, signed_area
+
+IDS = [s.id for s in CATALOGUE]
+
+
+def shoelace(poly):
+    x, y = np.asarray(poly).T
+    return 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+
+
+def test_body_counts():
+    a = get_specimen("Sh06-Sd015").arch
+    glued, free = discretise(a, config="glued"), discretise(a, config="free")
+    assert glued.n_bodies == 15 and free.n_bodies == 17
+    assert len(free.blocks) == 17 and len(glued.blocks) == 17
+    assert len(free.joints) == 18 and len(glued.joints) == 16
+    assert [j.name for j in glued.joints] == [f"L{k}" for k in range(8)] + [f"R{k}" for k in range(7, -1, -1)]
+    # base joints connect to the base (-1) at both ends
+    assert free.joints[0].a == -1 and free.joints[-1].b == -1
+
+
+def test_joint_angles_spec_rule():
+    a = get_specimen("Sh02-Sd020").arch
+    psi = joint_angles(a)
+    assert psi[-1] == pytest.approx(8 * a.psi_i / 8.5)
+    # the crown is as wide at the intrados as a voussoir: two half parts
+    assert a.psi_i - psi[-1] == pytest.approx((psi[1] - psi[0]) / 2)
+
+
+@pytest.mark.parametrize("sid", IDS)
+def test_linearised_areas_sum_to_corner_polygon(sid):
+    a = get_specimen(sid).arch
+    asm = discretise(a, config="free")
+    psi = asm.joint_angles
+    right_i = a.point(psi, a.Ri)
+    right_e = a.point(psi, a.Re)
+    left_i, left_e = right_i * [-1, 1], right_e * [-1, 1]
+    # polygon through all joint corners and the two apex points, built independently here
+    poly = np.vstack([left_i, [a.apex_intrados], right_i[::-1], right_e, [a.apex_extrados], left_e[::-1]])
+    total = sum(b.area for b in asm.bodies)
+    assert total == pytest.approx(shoelace(poly), rel=1e-12)  # both exact: round-off only
+
+
+@pytest.mark.parametrize("sid", IDS)
+def test_curved_areas_sum_to_exact_arch_area(sid):
+    a = get_specimen(sid).arch
+    asm = discretise(a, config="free", shape="curved")
+    total = sum(b.area for b in asm.bodies)
+    # spec 01 §1.2: polygonisation changes the area by < 0.5 %
+    assert total == pytest.approx(a.area(), rel=5e-3)
+    assert total < a.area()  # chords lie inside the convex extrados and... net loss expected
+
+
+@pytest.mark.parametrize("shape", ["linearised", "curved"])
+@pytest.mark.parametrize("config", ["free", "glued"])
+def test_mass_and_centroid_against_fine_shoelace(shape, config):
+    # independent route: densify every body outline and use the plain shoelace/centroid formula
+    a = get_specimen("Sh1-Sd015").arch
+    asm = discretise(a, config=config, shape=shape)
+    for b in asm.bodies:
+        poly = b.outline
+        A = shoelace(poly)
+        x, y = poly.T
+        xn, yn = np.roll(x, -1), np.roll(y, -1)
+        cr = x * yn - xn * y
+        cx = np.sum((x + xn) * cr) / (6 * signed_area(poly))
+        cy = np.sum((y + yn) * cr) / (6 * signed_area(poly))
+        assert b.mass == pytest.approx(asm.density * a.width * A, rel=1e-12)
+        np.testing.assert_allclose(b.centroid, [cx, cy], atol=1e-12)
+
+
+def test_curved_mass_within_half_percent_of_exact_arcs():
+    from specimens.sections import ring_segment_properties
+
+    a = get_specimen("Sh06-Sd020").arch
+    asm = discretise(a, config="free", shape="curved")
+    psi = asm.joint_angles
+    for k in range(1, len(psi)):
+        exact = ring_segment_properties(a, (1, psi[k]), (1, psi[k - 1]))
+        body = asm.body(f"R{k}")
+        assert body.area == pytest.approx(exact.area, rel=5e-3)  # spec tolerance
+        assert np.linalg.norm(body.centroid - exact.centroid) < 5e-3 * a.t
+
+
+def test_inertia_of_a_rectangle_voussoir_limit():
+    # a single very flat voussoir of a huge arch is nearly a rectangle t x (R dpsi):
+    # in-plane inertia -> m (t^2 + l^2) / 12
+    a = PointedArch.round(100.0, 0.5, width=0.3)
+    asm = discretise(a, n_voussoirs=400, config="free")
+    b = asm.body("R200")
+    l = a.Rp * (asm.joint_angles[1] - asm.joint_angles[0])
+    assert b.I_z == pytest.approx(b.mass * (a.t**2 + l**2) / 12, rel=1e-4)
+    assert b.inertia[0, 0] + b.inertia[1, 1] == pytest.approx(b.I_z + 2 * b.mass * a.width**2 / 12, rel=1e-12)
+
+
+@pytest.mark.parametrize("config", ["free", "glued"])
+@pytest.mark.parametrize("shape", ["linearised", "curved"])
+def test_left_right_mirror_symmetry(config, shape):
+    asm = discretise(get_specimen("Sh02-Sd025").arch, config=config, shape=shape)
+    n = asm.n_bodies
+    for k in range(n):
+        b, m = asm.bodies[k], asm.bodies[n - 1 - k]
+        assert b.mass == pytest.approx(m.mass, rel=1e-12)
+        assert b.centroid[0] == pytest.approx(-m.centroid[0], abs=1e-12)
+        assert b.centroid[1] == pytest.approx(m.centroid[1], abs=1e-12)
+        assert b.inertia[0, 1] == pytest.approx(-m.inertia[0, 1], abs=1e-15)
+    assert asm.centroid[0] == pytest.approx(0.0, abs=1e-12)
+    nj = len(asm.joints)
+    for k in range(nj):
+        j, m = asm.joints[k], asm.joints[nj - 1 - k]
+        np.testing.assert_allclose(j.p_i * [-1, 1], m.p_i, atol=1e-14)
+        np.testing.assert_allclose(j.normal * [1, -1], m.normal, atol=1e-14)
+
+
+def test_pieces_convex_and_crown_not_hulled():
+    for shape in ("linearised", "curved"):
+        asm = discretise(get_specimen("Sh1-Sd025").arch, config="free", shape=shape)
+        crown = asm.body("C")
+        assert len(crown.pieces) >= 2
+        assert not is_convex(crown.outline)  # the apex notch
+        assert sum(shoelace(p) for p in crown.pieces) == pytest.approx(crown.area, rel=1e-12)
+        for b in asm.bodies:
+            for p in b.pieces:
+                assert is_convex(p) and signed_area(p) > 0
+
+
+def test_joint_geometry():
+    a = get_specimen("Sh06-Sd015").arch
+    asm = discretise(a, config="free")
+    for j in asm.joints:
+        assert j.length == pytest.approx(a.t, rel=1e-12)  # radial cuts span the thickness
+        assert np.dot(j.normal, j.tangent) == pytest.approx(0.0, abs=1e-12)
+        # normal points from body a to body b
+        if j.a >= 0:
+            assert np.dot(asm.bodies[j.a].centroid - j.p_i, j.normal) < 0
+        if j.b >= 0:
+            assert np.dot(asm.bodies[j.b].centroid - j.p_i, j.normal) > 0
+    assert asm.joints[0].p_i[1] == 0.0 and asm.joints[-1].p_e[1] == 0.0
+
+
+def test_round_arch_discretisation():
+    a = PointedArch.round(0.2, 0.04)
+    asm = discretise(a, config="free")
+    crown = asm.body("C")
+    assert crown.centroid[0] == pytest.approx(0.0, abs=1e-14)
+    # with e = 0 every voussoir is the same trapezoid and the joints divide a quarter circle
+    masses = [asm.body(f"R{k}").mass for k in range(1, 9)]
+    assert np.ptp(masses) < 1e-12 * masses[0]
+    assert asm.joint_angles[-1] == pytest.approx(8 * (np.pi / 2) / 8.5)
+    # the linearised crown joins the apex points: two convex halves (spec rule, also for e = 0)
+    assert len(crown.pieces) == 2 and all(is_convex(p) for p in crown.pieces)
+
+
+@pytest.mark.parametrize("kw,match", [
+    (dict(n_voussoirs=0), "voussoirs"), (dict(shape="round"), "shape"), (dict(config="x"), "configuration"),
+    (dict(density=-1.0), "density"), (dict(crown_fraction=0.0), "crown"),
+])
+def test_bad_discretisation(kw, match):
+    with pytest.raises(ArchdemInputError, match=match):
+        discretise(get_specimen("Sh06-Sd015").arch, **kw)
