@@ -35,6 +35,10 @@ def atomic_path(target: str | os.PathLike, overwrite: bool = False) -> Iterator[
         yield tmp_path
         if target.exists() and not overwrite:
             raise ArchdemInputError(f"{target} appeared while writing; not overwriting it")
+        # mkstemp creates 0600 files; give results the usual permissions of the umask
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp_path, 0o666 & ~umask)
         os.replace(tmp_path, target)
     finally:
         if tmp_path.exists():

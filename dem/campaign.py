@@ -50,14 +50,21 @@ def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
         w.writeheader()
         w.writerows(rows)
     (d / "catalogue.json").write_text(json.dumps([{k: r[k] for k in JSON_KEYS} for r in rows], indent=2))
-    files = []
+    figures = []
     for s in ctx.specimens:
         asm = discretise(s.arch, config=ctx.config)
-        files.append(str(save_drawing(asm, d / "drawings" / f"{s.id}.png",
-                                      title=f"{s.id}   Sh = {s.arch.Sh:.2f}, Sd = {s.arch.Sd:.2f}").relative_to(ctx.out)))
+        png = save_drawing(asm, d / "drawings" / f"{s.id}.png", title=f"{s.id}   Sh = {s.arch.Sh:.2f}, Sd = {s.arch.Sd:.2f}")
+        figures.append({"path": f"catalogue/drawings/{png.name}", "caption": f"{s.id}: blocks and joints ({ctx.config})"})
         export_meshes(asm, d / "meshes" / s.id, "glb")
         export_meshes(asm, d / "meshes" / s.id, "stl")
-    return {"table": "catalogue/catalogue.csv", "drawings": files, "n_specimens": len(rows)}
+    heaviest = max(rows, key=lambda r: r["mass"])
+    return {
+        "summary": f"{len(rows)} specimens, {ctx.config} configuration; meshes (GLB and one STL per convex piece) "
+                   "in catalogue/meshes/.",
+        "tables": [{"name": "catalogue", "title": "Specimen catalogue (SI units)", "csv": "catalogue/catalogue.csv"}],
+        "figures": figures[:3] if ctx.quick else figures,
+        "findings": [f"The heaviest specimen is {heaviest['id']} ({heaviest['mass']:.2f} kg glued assembly)."],
+    }
 
 
 # name -> (function, description); later steps are appended by the modules that provide them
@@ -100,12 +107,15 @@ def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
         if final.exists():
             shutil.rmtree(final)
         tmp.rename(final)
-        # paths written relative to the step's temporary folder are re-rooted
-        outputs = json.loads(json.dumps(outputs).replace(f".{name}.part/", f"{name}/"))
         ctx.results[name] = outputs
         manifest["steps"][name] = {"outputs": outputs, "wall_s": wall}
         _write_json_atomic(manifest_path, manifest)
         ctx.log(f"[{name}] done in {wall:.1f} s")
+    from dem.report import build_report
+
+    rep = build_report(out, manifest, {k: v[1] for k, v in STEPS.items()})
+    manifest["report"] = rep["report"]
+    _write_json_atomic(manifest_path, manifest)
     return manifest
 
 
