@@ -17,7 +17,9 @@ from specimens.errors import ArchdemInputError
 # Sub-command modules, in the order they appear in ``archdem --help``.
 _COMMANDS = [
     "specimens_cmd",
+    "analytic_cmd",
     "campaign_cmd",
+    "record_cmd",
 ]
 
 

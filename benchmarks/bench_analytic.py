@@ -1,0 +1,57 @@
+"""Speed of the limit analyses (issue targets: catalogue enumeration + LP < 2 s; continuous
+minimisation of the 11 specimens < 10 s; the 48-arch full-scale set < 30 s; one core).
+
+Prints the timings and writes them to benchmarks/results/analytic.json (atomically; a new
+numbered file if it exists).
+"""
+from __future__ import annotations
+
+import json
+import platform
+import time
+from pathlib import Path
+
+from analytic.limit_continuous import continuous_collapse
+from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+from dem.atomic import atomic_path, unique_run_path
+from specimens.blocks import discretise
+from specimens.catalogue import CATALOGUE, REFERENCE_MU_BASE, REFERENCE_MU_JOINT, full_scale_set
+
+
+def main() -> dict:
+    asms = [discretise(s.arch, config=c) for s in CATALOGUE for c in ("free", "glued")]
+    t0 = time.perf_counter()
+    for a in asms:
+        enumerate_mechanisms(a)
+    t_enum = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    for a in asms:
+        solve_lp(a, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)
+    t_lp = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    for s in CATALOGUE:
+        continuous_collapse(s.arch)
+    t_cont = time.perf_counter() - t0
+    fs = full_scale_set()
+    t0 = time.perf_counter()
+    for s in fs:
+        continuous_collapse(s.arch)
+    t_fs = time.perf_counter() - t0
+    res = {
+        "catalogue_enumeration_s": t_enum, "catalogue_lp_s": t_lp, "catalogue_enum_plus_lp_s": t_enum + t_lp,
+        "target_enum_plus_lp_s": 2.0,
+        "catalogue_continuous_s": t_cont, "target_continuous_s": 10.0,
+        "full_scale_continuous_s": t_fs, "n_full_scale": len(fs), "target_full_scale_s": 30.0,
+        "python": platform.python_version(), "machine": platform.machine(),
+    }
+    for k, v in res.items():
+        print(f"{k:32s} {v:.3f}" if isinstance(v, float) else f"{k:32s} {v}")
+    out = unique_run_path(Path(__file__).parent / "results", "analytic", ".json")
+    with atomic_path(out) as tmp:
+        tmp.write_text(json.dumps(res, indent=2))
+    print(f"written {out.name}")
+    return res
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,116 @@
+"""``archdem analytic``: limit analysis of one arch (continuous, discrete, LP, two-bar) or figures."""
+from __future__ import annotations
+
+import argparse
+import math
+import warnings
+
+from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir
+from specimens.errors import ArchdemInputError
+
+
+def register(sub) -> None:
+    p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar",
+                       description=__doc__.splitlines()[0])
+    add_arch_arguments(p)
+    p.add_argument("--config", choices=("glued", "free"), default="glued", help="discrete configuration")
+    p.add_argument("--mu-joint", type=float, default=None, help="block-block friction (default 0.577)")
+    p.add_argument("--mu-base", type=float, default=None, help="block-base friction (default 1.0)")
+    p.add_argument("--effective-thickness", type=float, default=1.0,
+                   help="fraction of t kept about Rp in the continuous analysis (default 1)")
+    p.add_argument("--contact-fraction", type=float, default=1.0,
+                   help="central fraction of every joint in contact, discrete analyses (default 1)")
+    p.add_argument("--min-spacing", type=float, default=0.0, help="least hinge spacing [rad] (continuous)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--plot", metavar="DIR", default=None,
+                   help="write the catalogue / full-scale figures to DIR (no id needed)")
+    p.set_defaults(func=run)
+
+
+def _finite_mu(name: str, v: float | None, default: float) -> float:
+    if v is None:
+        return default
+    if not (v >= 0):
+        raise ArchdemInputError(f"{name} must be >= 0 (inf allowed), got {v}")
+    return float(v)
+
+
+def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
+            contact_fraction: float = 1.0, min_spacing: float = 0.0, disc_kw: dict | None = None) -> dict:
+    """All analytic multipliers of one arch as a JSON-ready dict."""
+    from analytic.limit_continuous import continuous_collapse
+    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
+    from specimens.blocks import discretise
+
+    kw = dict(disc_kw or {})
+    density = kw.get("density", 500.0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        cont = continuous_collapse(arch, density=density, min_spacing=min_spacing,
+                                   effective_thickness=effective_thickness)
+    asm = discretise(arch, config=config, **kw)
+    kin = enumerate_mechanisms(asm, contact_fraction=contact_fraction)
+    lp = solve_lp(asm, mu_joint, mu_base, contact_fraction=contact_fraction)
+    return {
+        "arch": arch.describe(),
+        "config": config, "mu_joint": mu_joint, "mu_base": mu_base,
+        "effective_thickness": effective_thickness, "contact_fraction": contact_fraction,
+        "lambda_continuous": cont.lam,
+        "hinges_continuous": [{"half": "left" if h.side < 0 else "right", "angle_rad": h.psi, "face": h.face,
+                               "polar_angle_rad": h.polar_about_origin(arch.with_thickness(arch.t * effective_thickness)),
+                               "cut_coordinate": float(u)}
+                              for h, u in zip(cont.hinges, cont.u)] if cont.layout else [],
+        "continuous_converged": cont.converged, "continuous_message": cont.message,
+        "warnings": [str(w.message) for w in caught],
+        "lambda_discrete": kin.lam,
+        "hinges_discrete": [{"joint": j, "face": f} for j, f in kin.hinges],
+        "lambda_lp": lp.lam, "lp_status": lp.message,
+        "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
+        "lambda_two_bar": lambda_two_bar(arch, density),
+        "lambda_slide_two_bar": lambda_slide(arch, min(mu_joint, 1e6), density),
+        "mu_star": mu_star(arch, cont.lam, density),
+        "stands": bool(cont.stands and kin.stands and lp.stands),
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    from specimens.catalogue import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
+    if args.plot is not None:
+        from analytic.figures_limit import catalogue_figures
+
+        out = writable_dir(args.plot)
+        files = catalogue_figures(out)
+        if args.json:
+            print_json({"figures": [str(f) for f in files]})
+        else:
+            for f in files:
+                print(f)
+        if args.id is None and all(getattr(args, k) is None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
+            return 0
+    label, arch = arch_from_args(args)
+    mu_j = _finite_mu("--mu-joint", args.mu_joint, REFERENCE_MU_JOINT)
+    mu_b = _finite_mu("--mu-base", args.mu_base, REFERENCE_MU_BASE)
+    if not (0 < args.effective_thickness <= 1):
+        raise ArchdemInputError(f"--effective-thickness must be in (0, 1], got {args.effective_thickness}")
+    res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.contact_fraction,
+                  args.min_spacing, discretisation_kwargs(args))
+    res["id"] = label
+    res = {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}
+    if args.json:
+        print_json(res)
+        return 0
+    print(f"{label}  (config {args.config}, mu_joint {mu_j:g}, mu_base {mu_b:g})")
+    hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} {h['face'][:3]}" for h in res["hinges_continuous"])
+    print(f"  continuous   lambda = {res['lambda_continuous']:.4f}   hinges: {hc}")
+    hd = ", ".join(f"{h['joint']} {h['face'][:3]}" for h in res["hinges_discrete"])
+    print(f"  discrete     lambda = {res['lambda_discrete']:.4f}   hinges: {hd}")
+    act = ", ".join(f"{k} {v['state']}" for k, v in res["joints_lp"].items() if v["state"] != "closed")
+    print(f"  LP (friction) lambda = {res['lambda_lp'] if res['lambda_lp'] is None else round(res['lambda_lp'], 4)}   {act}   [{res['lp_status']}]")
+    print(f"  two-bar      lambda = {res['lambda_two_bar']:.4f}   mu* = {res['mu_star']:.3f}")
+    for w in res["warnings"]:
+        print(f"  warning: {w}")
+    if not res["stands"]:
+        print("  the arch cannot stand under self-weight")
+    return 0 if math.isfinite(res["lambda_continuous"]) else 1
