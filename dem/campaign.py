@@ -36,8 +36,6 @@ StepFunc = Callable[[CampaignContext, Path], dict]
 
 def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
     """Catalogue table (CSV, JSON), a drawing and the meshes of every specimen."""
-    import csv
-
     from dem.cli.specimens_cmd import JSON_KEYS, catalogue_rows
     from specimens.blocks import discretise
     from specimens.drawing import save_drawing
@@ -45,10 +43,7 @@ def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
 
     ids = {s.id for s in ctx.specimens}
     rows = [r for r in catalogue_rows() if r["id"] in ids]
-    with open(d / "catalogue.csv", "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    _write_csv(d / "catalogue.csv", rows)
     (d / "catalogue.json").write_text(json.dumps([{k: r[k] for k in JSON_KEYS} for r in rows], indent=2))
     figures = []
     for s in ctx.specimens:
@@ -67,9 +62,89 @@ def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
     }
 
 
+def _write_csv(path: Path, rows: list[dict]) -> None:
+    import csv
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+
+def _pct(a: float, b: float) -> float:
+    return 100.0 * (a - b) / b
+
+
+def step_analytic(ctx: CampaignContext, d: Path) -> dict:
+    """Limit analysis of every specimen: continuous, 80 % thickness, discrete, LP, two-bar."""
+    import numpy as np
+
+    from analytic.figures_limit import catalogue_figures
+    from analytic.limit_continuous import continuous_collapse
+    from analytic.limit_discrete import enumerate_mechanisms
+    from analytic.summary import analyse
+    from specimens.blocks import discretise
+    from specimens.catalogue import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
+    rows = []
+    for s in ctx.specimens:
+        a = analyse(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)
+        other = "free" if ctx.config == "glued" else "glued"
+        lam_other = enumerate_mechanisms(discretise(s.arch, config=other)).lam
+        lam80 = continuous_collapse(s.arch, effective_thickness=0.8).lam
+        sliding = [j for j, v in a["joints_lp"].items() if "sliding" in v["state"]]
+        rows.append({
+            "id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6),
+            "lambda_continuous": a["lambda_continuous"], "lambda_continuous_80pct": lam80,
+            f"lambda_discrete_{ctx.config}": a["lambda_discrete"], f"lambda_discrete_{other}": lam_other,
+            "lambda_lp_reference_friction": a["lambda_lp"], "lambda_two_bar": a["lambda_two_bar"],
+            "mu_star_two_bar": a["mu_star"],
+            "hinges_discrete": " ".join(f"{h['joint']}:{h['face'][0]}" for h in a["hinges_discrete"]),
+            "hinges_continuous_rad": " ".join(f"{h['half'][0].upper()}{h['angle_rad']:.3f}{h['face'][0]}"
+                                              for h in a["hinges_continuous"]),
+            "lp_sliding_joints": " ".join(sliding),
+        })
+    _write_csv(d / "analytic.csv", rows)
+    figs = catalogue_figures(d / "figures", full_scale=True)
+    keep = [f for f in figs if "mechanism" not in f.name] + [f for f in figs if "mechanism" in f.name][:2]
+    figures = [{"path": f"analytic/figures/{f.name}", "caption": f.stem.replace("_", " ")} for f in keep]
+    # findings computed from the rows
+    lc = np.array([r["lambda_continuous"] for r in rows])
+    ld = np.array([r[f"lambda_discrete_{ctx.config}"] for r in rows])
+    gap = 100 * (ld - lc) / ld
+    k = int(np.argmax(gap))
+    findings = [
+        f"Continuous-profile lambda is below the discrete one for {int(np.sum(lc <= ld + 1e-12))} of {len(rows)} "
+        f"specimens; the largest gap is {gap[k]:.1f} % ({rows[k]['id']}).",
+    ]
+    by_sh: dict[float, list] = {}
+    for r in rows:
+        by_sh.setdefault(r["Sh"], []).append(r)
+    mono = [sh for sh, rs in by_sh.items() if len(rs) > 1 and
+            all(b["lambda_continuous"] > a["lambda_continuous"] for a, b in zip(sorted(rs, key=lambda r: r["Sd"]), sorted(rs, key=lambda r: r["Sd"])[1:]))]
+    if len(by_sh) > 0:
+        findings.append(f"lambda grows with slenderness Sd at fixed sharpness for Sh = {', '.join(f'{x:g}' for x in sorted(mono)) or 'none'}"
+                        f" (of {', '.join(f'{x:g}' for x in sorted(by_sh))}).")
+    base = sum(1 for r in rows if any(h.split(':')[0] in ('L0', 'R0') for h in r["hinges_discrete"].split()))
+    findings.append(f"The discrete mechanism has a hinge at a springing (base joint) in {base} of {len(rows)} specimens.")
+    red = np.array([_pct(r["lambda_continuous_80pct"], r["lambda_continuous"]) for r in rows])
+    findings.append(f"An 80 % effective thickness lowers the continuous lambda by {-red.max():.0f}-{-red.min():.0f} %.")
+    slid = [r["id"] for r in rows if r["lp_sliding_joints"]]
+    findings.append(f"At the reference friction ({REFERENCE_MU_JOINT}/{REFERENCE_MU_BASE}) the associative LP has sliding joints in "
+                    f"{len(slid)} specimens{': ' + ', '.join(slid) if slid else ''}.")
+    return {
+        "summary": "Limit analysis: four-hinge mechanism on the continuous profile (global search), discrete "
+                   "enumeration of the actual voussoirs, static LP with Coulomb friction, two-bar sliding model.",
+        "tables": [{"name": "analytic", "title": "Limit analysis per specimen", "csv": "analytic/analytic.csv"}],
+        "figures": figures, "findings": findings,
+    }
+
+
 # name -> (function, description); later steps are appended by the modules that provide them
 STEPS: dict[str, tuple[StepFunc, str]] = {
     "catalogue": (step_catalogue, "specimen catalogue, drawings and meshes"),
+    "analytic": (step_analytic, "limit analysis of every specimen"),
 }
 
 

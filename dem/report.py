@@ -22,7 +22,7 @@ body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:11
 h1{border-bottom:2px solid #8a6d3b}h2{margin-top:2em;border-bottom:1px solid #ccc}
 table{border-collapse:collapse;font-size:13px;margin:0.8em 0}th,td{border:1px solid #bbb;padding:3px 7px;text-align:right}
 th{background:#f3efe6}td:first-child,th:first-child{text-align:left}
-figure{display:inline-block;margin:0.5em;vertical-align:top;max-width:100%}figure img{max-width:100%;border:1px solid #ddd}
+figure{display:inline-block;margin:0.5em;vertical-align:top;max-width:100%}figure img{max-width:540px;width:100%;border:1px solid #ddd}
 figcaption{font-size:12px;color:#555;max-width:520px}.findings li{margin:0.3em 0}.meta{font-size:12px;color:#555}
 """
 

@@ -6,6 +6,7 @@ import math
 import warnings
 
 from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir
+from analytic.summary import analyse
 from specimens.errors import ArchdemInputError
 
 
@@ -33,45 +34,6 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
     if not (v >= 0):
         raise ArchdemInputError(f"{name} must be >= 0 (inf allowed), got {v}")
     return float(v)
-
-
-def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
-            contact_fraction: float = 1.0, min_spacing: float = 0.0, disc_kw: dict | None = None) -> dict:
-    """All analytic multipliers of one arch as a JSON-ready dict."""
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-    from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
-    from specimens.blocks import discretise
-
-    kw = dict(disc_kw or {})
-    density = kw.get("density", 500.0)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        cont = continuous_collapse(arch, density=density, min_spacing=min_spacing,
-                                   effective_thickness=effective_thickness)
-    asm = discretise(arch, config=config, **kw)
-    kin = enumerate_mechanisms(asm, contact_fraction=contact_fraction)
-    lp = solve_lp(asm, mu_joint, mu_base, contact_fraction=contact_fraction)
-    return {
-        "arch": arch.describe(),
-        "config": config, "mu_joint": mu_joint, "mu_base": mu_base,
-        "effective_thickness": effective_thickness, "contact_fraction": contact_fraction,
-        "lambda_continuous": cont.lam,
-        "hinges_continuous": [{"half": "left" if h.side < 0 else "right", "angle_rad": h.psi, "face": h.face,
-                               "polar_angle_rad": h.polar_about_origin(arch.with_thickness(arch.t * effective_thickness)),
-                               "cut_coordinate": float(u)}
-                              for h, u in zip(cont.hinges, cont.u)] if cont.layout else [],
-        "continuous_converged": cont.converged, "continuous_message": cont.message,
-        "warnings": [str(w.message) for w in caught],
-        "lambda_discrete": kin.lam,
-        "hinges_discrete": [{"joint": j, "face": f} for j, f in kin.hinges],
-        "lambda_lp": lp.lam, "lp_status": lp.message,
-        "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
-        "lambda_two_bar": lambda_two_bar(arch, density),
-        "lambda_slide_two_bar": lambda_slide(arch, min(mu_joint, 1e6), density),
-        "mu_star": mu_star(arch, cont.lam, density),
-        "stands": bool(cont.stands and kin.stands and lp.stands),
-    }
 
 
 def run(args: argparse.Namespace) -> int:
