@@ -20,6 +20,7 @@ _COMMANDS = [
     "analytic_cmd",
     "campaign_cmd",
     "record_cmd",
+    "dynamics_cmd",
 ]
 
 

@@ -1,0 +1,207 @@
+"""``archdem domain`` (failure domain) and ``archdem rock`` (one time history) of the rocking linkages."""
+from __future__ import annotations
+
+import argparse
+import math
+
+
+from dem.cli.common import add_arch_arguments, arch_from_args, print_json, writable_file
+from specimens.errors import ArchdemInputError
+
+
+def parse_grid(text: str, what: str = "--freq") -> list[float]:
+    """``"0.5,1,2"`` or an inclusive range ``"start:stop:step"``."""
+    try:
+        if ":" in text:
+            a, b, s = (float(v) for v in text.split(":"))
+            if not (s > 0 and b >= a):
+                raise ValueError
+            n = int(math.floor((b - a) / s + 1e-9)) + 1
+            vals = [a + k * s for k in range(n)]
+        else:
+            vals = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ArchdemInputError(f"{what}: expected a list '0.5,1,2' or a range 'start:stop:step', got {text!r}") from None
+    if not vals or not all(math.isfinite(v) and v > 0 for v in vals):
+        raise ArchdemInputError(f"{what}: values must be positive, got {text!r}")
+    return vals
+
+
+def _restitution(text: str) -> float | None:
+    if text == "auto":
+        return None
+    try:
+        v = float(text)
+    except ValueError:
+        raise ArchdemInputError(f"--restitution must be 'auto' or a number in [0, 1], got {text!r}") from None
+    if not 0 <= v <= 1:
+        raise ArchdemInputError(f"--restitution must be in [0, 1], got {v:g}")
+    return v
+
+
+def build_mechanism(args: argparse.Namespace):
+    """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
+    density = args.density if args.density is not None else 500.0
+    if not (density > 0 and math.isfinite(density)):
+        raise ArchdemInputError(f"--density must be positive, got {density}")
+    if args.block is not None:
+        from analytic.rocking_block import RockingBlock
+
+        if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
+            raise ArchdemInputError("give either --block B H or an arch, not both")
+        if args.model not in (None, "block"):
+            raise ArchdemInputError("--block goes with --model block")
+        b, h = args.block
+        width = args.width if args.width is not None else 0.1
+        return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
+    label, arch = arch_from_args(args)
+    model = args.model or "four-bar"
+    if model == "block":
+        raise ArchdemInputError("--model block needs --block B H")
+    from analytic import linkage
+
+    if model == "two-bar":
+        return label, linkage.arch_two_bar(arch, density, direction=1)
+    lay = args.layout
+    if lay == "minimised":
+        return label, linkage.minimised_four_bar(arch, density, direction=1)
+    if lay == "oppenheim":
+        layout = linkage.oppenheim_hinges(arch)
+    else:
+        layout = linkage.parse_hinge_angles(arch, lay)
+    fb = linkage.arch_four_bar(arch, layout, density, direction=1, name=f"four-bar ({lay.split(',')[0] if ',' not in lay else 'user'})")
+    if not fb.admissible:
+        raise ArchdemInputError(f"the {lay} hinge layout is not an admissible mechanism for this arch")
+    return label, fb
+
+
+def _add_common(p: argparse.ArgumentParser) -> None:
+    add_arch_arguments(p)
+    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
+                   help="rectangular block of half-width B and half-height H [m]")
+    p.add_argument("--model", choices=("four-bar", "two-bar", "block"), default=None, help="linkage (default four-bar)")
+    p.add_argument("--layout", default="minimised",
+                   help="four-bar hinge layout: minimised | oppenheim | 'b1,b2,b3,b4' (polar angles about O, rad)")
+    p.add_argument("--input", choices=("sine", "sine0", "A", "B"), default="sine",
+                   help="phased one-cycle sine (starts at the onset), plain one-cycle sine, pulse A or B")
+    p.add_argument("--restitution", default="auto", help="'auto' (momentum balance) or an energy restitution in [0, 1]")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("--plot", default=None, metavar="FILE.png", help="write a figure (never overwrites)")
+
+
+def _run_domain(args: argparse.Namespace) -> int:
+    if args.engine == "dem":
+        try:
+            from dem.shake_domain import dem_domain  # noqa: F401
+        except ImportError:
+            raise ArchdemInputError("the DEM failure domain is not available yet") from None
+        return int(dem_domain(args) or 0)
+    from analytic.domain import failure_domain
+    from analytic.impact import post_impact
+
+    rest = _restitution(args.restitution)
+    pulses = args.input in ("A", "B")
+    if pulses and args.freq is not None:
+        raise ArchdemInputError("pulses A/B take --durations, not --freq")
+    if not pulses and args.durations is not None:
+        raise ArchdemInputError("sine inputs take --freq, not --durations")
+    xs = parse_grid(args.durations or "0.05:1:0.05", "--durations") if pulses else parse_grid(args.freq or "1:20:0.5")
+    if args.plot:
+        writable_file(args.plot, overwrite=False)
+    label, mech = build_mechanism(args)
+    dom = failure_domain(mech, args.input, xs, a_max_ratio=args.amax, n_scan=args.scan, tol=args.tol,
+                         restitution=rest, workers=args.workers)
+    e = post_impact(mech, rest).e_applied
+    if args.plot:
+        from analytic.figures_dynamics import plot_domain
+
+        plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
+    if args.json:
+        print_json({"restitution": e, "omega0": dom.omega0, "phi_cr": dom.phi_cr, "lambda": dom.lam,
+                    "points": dom.points(), "bands": dom.bands()})
+        return 0
+    unit = "Hz" if dom.axis == "frequency" else "s"
+    print(f"{label}  {mech.label}  lambda {dom.lam:.4f}  omega0 {dom.omega0:.4g} rad/s  phi_cr {dom.phi_cr:.4g} rad  "
+          f"e {e:.4f}")
+    for c in dom.columns:
+        th = ", ".join(f"{a / 9.81:.4f} g ({m})" for a, m in c.thresholds) or "none below a_max"
+        print(f"  {c.x:8.4g} {unit}: collapse from {th}")
+    if args.plot:
+        print(f"figure: {args.plot}")
+    return 0
+
+
+def _run_rock(args: argparse.Namespace) -> int:
+    from analytic.domain import make_input
+    from analytic.dynamics import simulate
+    from analytic.inputs import G
+
+    rest = _restitution(args.restitution)
+    if args.record is not None:
+        from analytic.records import read_record
+
+        if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
+            raise ArchdemInputError("--scale (a positive factor) is needed with --record")
+        if args.plot:
+            writable_file(args.plot, overwrite=False)
+        motion = read_record(args.record).scaled(args.scale)
+        label, mech = build_mechanism(args)
+        what = f"record {motion.name or args.record} x {args.scale:g}"
+    else:
+        if args.amplitude is None or not (args.amplitude > 0):
+            raise ArchdemInputError("--amplitude (in g) must be a positive number")
+        pulses = args.input in ("A", "B")
+        x = args.duration if pulses else args.freq
+        if x is None or not (x > 0):
+            raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
+        if args.plot:
+            writable_file(args.plot, overwrite=False)
+        label, mech = build_mechanism(args)
+        a = args.amplitude * G
+        if args.input == "sine" and a < abs(mech.onset):
+            raise ArchdemInputError(f"the phased sine needs amplitude >= onset lambda = {mech.lam:.4f} g")
+        motion = make_input(args.input, a, x, abs(mech.onset))
+        what = f"{args.input} {x:g} {'s' if pulses else 'Hz'}, {args.amplitude:g} g"
+    r = simulate(mech, motion, restitution=rest, record=True)
+    if args.plot:
+        from analytic.figures_dynamics import plot_response
+
+        plot_response(r, args.plot, title=f"{label}: {what}", input_end=motion.duration)
+    out = {"model": mech.summary(), "input": motion.describe(), **r.summary()}
+    if args.json:
+        print_json(out)
+        return 0
+    print(f"{label}  {mech.label}  lambda {mech.lam:.4f}  phi_cr {mech.phi_cr:.4g} rad")
+    print(f"{'COLLAPSE' if r.collapsed else 'survival'} ({r.rule}{', ' + r.mode if r.mode else ''})  "
+          f"max phi/phi_cr {r.max_ratio:.4f}  impacts {r.n_impacts}"
+          + (f"  t_collapse {r.t_collapse:.4f} s" if r.t_collapse is not None else ""))
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
+                       description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
+                                   "duration (pulses), all collapse/survival bands.")
+    _add_common(p)
+    p.add_argument("--freq", default=None, help="frequencies [Hz]: '0.5,1,2' or 'start:stop:step' (default 1:20:0.5)")
+    p.add_argument("--durations", default=None, help="pulse durations t_i [s] (default 0.05:1:0.05)")
+    p.add_argument("--amax", type=float, default=10.0, help="top of the amplitude scan / (lambda g) (default 10)")
+    p.add_argument("--scan", type=int, default=24, help="amplitudes in the scan (default 24)")
+    p.add_argument("--tol", type=float, default=1e-3, help="relative bisection tolerance (default 1e-3)")
+    p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
+    p.add_argument("--config", choices=("glued", "free"), default="glued", help="DEM: discrete configuration")
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None, help="DEM: block-block friction (default 0.577)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=None, help="DEM: block-base friction (default 1.0)")
+    p.set_defaults(func=_run_domain)
+
+    q = sub.add_parser("rock", help="one time history of a rocking linkage",
+                       description="One time history: rotation / phi_cr against time, impacts, collapse rule.")
+    _add_common(q)
+    q.add_argument("--freq", type=float, default=None, help="sine frequency [Hz]")
+    q.add_argument("--duration", type=float, default=None, help="pulse duration t_i [s] (pulses A/B)")
+    q.add_argument("--amplitude", type=float, default=None, help="amplitude [g]")
+    q.add_argument("--record", default=None, metavar="FILE",
+                   help="recorded accelerogram (AT2, SMC, ESM, CSV) instead of --input")
+    q.add_argument("--scale", type=float, default=None, help="factor applied to the record")
+    q.set_defaults(func=_run_rock)
