@@ -68,7 +68,7 @@ def _seg_green(p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
     return np.stack([A, Sx, Sy], axis=-1)
 
 
-class _Ring:
+class RingCuts:
     """The cut family and the cumulative section function of one arch (see module doc)."""
 
     def __init__(self, arch: PointedArch):
@@ -167,7 +167,7 @@ def _check_density(density: float) -> None:
         raise ArchdemInputError(f"density must be a positive number [kg/m^3], got {density!r}")
 
 
-def _lambda_u(ring: _Ring, u: np.ndarray, faces: np.ndarray, load_sign: int = 1):
+def _lambda_u(ring: RingCuts, u: np.ndarray, faces: np.ndarray, load_sign: int = 1):
     """Vectorised multiplier of layouts ``u`` (..., 4) with face indices ``faces`` (..., 4)."""
     I, E = ring.ends(u)
     pts = np.stack([I, E], axis=-2)  # (..., 4, 2 faces, 2)
@@ -192,7 +192,7 @@ def lambda_of_hinges(arch: PointedArch, hinges, density: float = 500.0, load_sig
     ``density`` does not change the multiplier (kept for a uniform signature).
     """
     _check_density(density)
-    ring = _Ring(arch)
+    ring = RingCuts(arch)
     u = np.array([ring.u_of_hinge(h) for h in hinges]) if cuts is None else np.asarray(cuts, float)
     if np.any(np.diff(u) <= 0):
         raise ArchdemInputError("hinges must be given left to right at distinct cuts")
@@ -203,7 +203,7 @@ def lambda_of_hinges(arch: PointedArch, hinges, density: float = 500.0, load_sig
 
 def layout_of(arch: PointedArch, u: np.ndarray, faces: tuple[str, ...], density: float) -> FourHingeLayout:
     """The :class:`FourHingeLayout` of cuts ``u`` (4,) with exact macro-block properties."""
-    ring = _Ring(arch)
+    ring = RingCuts(arch)
     hinges = tuple(ring.hinge(float(x), f) for x, f in zip(u, faces))
     radial = all(x <= ring.psi_i or x >= ring.U - ring.psi_i for x in u)
     if radial and np.all(np.diff(u) > 0) and all(
@@ -258,7 +258,7 @@ def effective_arch(arch: PointedArch, effective_thickness: float) -> PointedArch
     return arch if f == 1.0 else arch.with_thickness(f * arch.t)
 
 
-def _grid_search(ring: _Ring, n: int, min_spacing: float, load_sign: int):
+def _grid_search(ring: RingCuts, n: int, min_spacing: float, load_sign: int):
     """Best admissible layouts on a grid of ``n`` cut positions, for each face pattern.
 
     Cut end points, normals and cumulative sections are computed once per grid node and
@@ -292,7 +292,7 @@ def _grid_search(ring: _Ring, n: int, min_spacing: float, load_sign: int):
 _STENCIL = np.array(list(itertools.product((-1, 0, 1), repeat=4)), dtype=float)
 
 
-def _pattern_search(ring: _Ring, u0: np.ndarray, faces: np.ndarray, step: float, min_spacing: float,
+def _pattern_search(ring: RingCuts, u0: np.ndarray, faces: np.ndarray, step: float, min_spacing: float,
                     load_sign: int, tol: float = 1e-10, max_iter: int = 400) -> tuple[float, np.ndarray, bool]:
     """Derivative-free local minimisation: full 3^4 stencil, evaluated in one vectorised batch.
 
@@ -344,7 +344,7 @@ def continuous_collapse(
     if not (math.isfinite(min_spacing) and min_spacing >= 0):
         raise ArchdemInputError(f"minimum hinge spacing must be >= 0 rad, got {min_spacing!r}")
     ar = effective_arch(arch, effective_thickness)
-    ring = _Ring(ar)
+    ring = RingCuts(ar)
     if 3 * min_spacing >= ring.U:
         raise ArchdemInputError(f"minimum hinge spacing {min_spacing:g} rad leaves no room for four hinges "
                                 f"(arch coordinate length {ring.U:.4g} rad)")

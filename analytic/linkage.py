@@ -45,9 +45,9 @@ def _cross(ax: float, ay: float, bx: float, by: float) -> float:
 # ring material (exact region properties between cuts of the arch coordinate u)
 # ---------------------------------------------------------------------------------------------
 def _ring(arch: PointedArch):
-    from analytic.limit_continuous import _Ring  # the cut family of the continuous analysis
+    from analytic.limit_continuous import RingCuts  # the cut family of the continuous analysis
 
-    return _Ring(arch)
+    return RingCuts(arch)
 
 
 @lru_cache(maxsize=4096)

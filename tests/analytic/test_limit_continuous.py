@@ -7,7 +7,7 @@ import pytest
 from scipy.optimize import brentq
 
 from analytic.layout import Hinge, continuous_layout
-from analytic.limit_continuous import _Ring, continuous_collapse, lambda_of_hinges
+from analytic.limit_continuous import RingCuts, continuous_collapse, lambda_of_hinges
 from analytic.limit_discrete import enumerate_mechanisms
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
@@ -23,7 +23,7 @@ def results():
 
 def test_closed_form_sections_match_quadrature():
     arch = get_specimen("Sh06-Sd020").arch
-    ring = _Ring(arch)
+    ring = RingCuts(arch)
     # radial cuts: against specimens.sections (Gauss quadrature), round-off agreement
     for (sa, pa), (sb, pb) in [((-1, 0.1), (1, 0.3)), ((-1, 0.2), (-1, 0.9)), ((1, 1.0), (1, 0.0))]:
         ua = ring.u_of_hinge(Hinge(sa, pa, "intrados"))
