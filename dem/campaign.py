@@ -148,8 +148,20 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
 }
 
 
+def all_steps() -> dict[str, tuple[StepFunc, str]]:
+    """Every campaign step in order (the simulator steps are registered on first use)."""
+    from dem import campaign_dem as cd
+
+    STEPS["tilt"] = (cd.step_tilt, "virtual tilt test of every specimen (reference friction and no sliding)")
+    STEPS["map"] = (cd.step_map, "friction threshold map (rocking / sliding)")
+    STEPS["shake"] = (cd.step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar")
+    STEPS["record"] = (cd.step_record, "recorded accelerogram scaled until collapse")
+    return STEPS
+
+
 def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
     """Run (or resume) the campaign; return the manifest."""
+    all_steps()
     out = ctx.out
     out.mkdir(parents=True, exist_ok=True)
     manifest_path = out / "campaign.json"

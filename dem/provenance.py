@@ -16,6 +16,6 @@ def package_version(name: str) -> str:
 def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
     """Versions of archdem and the libraries whose numbers a result depends on."""
     out = {"python": sys.version.split()[0], "platform": platform.platform()}
-    for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet") + tuple(extra):
+    for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco") + tuple(extra):
         out[name] = package_version(name)
     return out

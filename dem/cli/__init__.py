@@ -19,8 +19,12 @@ _COMMANDS = [
     "specimens_cmd",
     "analytic_cmd",
     "campaign_cmd",
+    "tilt_cmd",
+    "map_cmd",
     "record_cmd",
     "dynamics_cmd",
+    "shake_cmd",
+    "compare_cmd",
 ]
 
 

@@ -5,11 +5,11 @@ import argparse
 import time
 from pathlib import Path
 
-from dem.cli.common import writable_dir
+from dem.cli.common import add_engine_argument, writable_dir
 
 
 def _campaign(args: argparse.Namespace) -> int:
-    from dem.campaign import STEPS, CampaignContext, run_campaign
+    from dem.campaign import CampaignContext, all_steps, run_campaign
     from specimens.catalogue import select_specimens
 
     specs = select_specimens(args.specimens)
@@ -20,6 +20,7 @@ def _campaign(args: argparse.Namespace) -> int:
     steps = None
     if args.steps:
         steps = [s.strip() for s in args.steps.split(",")]
+        STEPS = all_steps()
         unknown = [s for s in steps if s not in STEPS]
         if unknown:
             from specimens.errors import ArchdemInputError
@@ -37,7 +38,7 @@ def register(sub) -> None:
     p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
     p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
     p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--engine", default="pybullet")
+    add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
     p.add_argument("--steps", default=None, help="comma-separated subset of steps")

@@ -96,3 +96,9 @@ def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
     if p.exists() and not overwrite:
         raise ArchdemInputError(f"{p} exists; not overwriting it (choose another name)")
     return p
+
+
+def add_engine_argument(p: argparse.ArgumentParser) -> None:
+    """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
+    p.add_argument("--engine", choices=("pybullet", "mujoco"), default="pybullet",
+                   help="physics engine (default pybullet; see README 'Choosing an engine')")

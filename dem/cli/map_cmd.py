@@ -1,0 +1,106 @@
+"""``archdem map``: friction-threshold map (DEM tilt lambda(mu), mode(mu), mu*) with analytic curves."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from dem.cli.common import add_engine_argument, print_json, writable_dir
+from specimens.errors import ArchdemInputError
+
+
+def _specimens(args: argparse.Namespace) -> list:
+    from specimens.catalogue import full_scale_set, select_specimens
+
+    if not args.full_scale:
+        return select_specimens(args.specimens)
+    pool = {s.id: s for s in full_scale_set()}
+    if args.specimens.strip() == "all":
+        return list(pool.values())
+    out = []
+    for sid in (s.strip() for s in args.specimens.split(",") if s.strip()):
+        if sid not in pool:
+            raise ArchdemInputError(f"unknown full-scale specimen {sid!r}; ids look like L10-Sh0.6-Sd0.15 "
+                                    f"(spans 5/10/20, Sh 0/0.2/0.6/1, Sd 0.1/0.15/0.2/0.25)")
+        out.append(pool[sid])
+    if not out:
+        raise ArchdemInputError("no specimens selected")
+    return out
+
+
+def _run(args: argparse.Namespace) -> int:
+    from dem.atomic import unique_run_path
+    from dem.friction_map import catalogue_map, parse_mu_grid
+    from dem.sweep import StudyInterrupted
+
+    specs = _specimens(args)
+    mus = parse_mu_grid(args.mu)
+    if not (math.isfinite(args.mu_base) and args.mu_base > 0):
+        raise ArchdemInputError(f"--mu-base must be a positive number, got {args.mu_base}")
+    if args.workers is not None and args.workers < 1:
+        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
+    if not (0 <= args.refine <= 20):
+        raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
+    if not (math.isfinite(args.tol) and 0 < args.tol < 1):
+        raise ArchdemInputError(f"--tol must be in (0, 1), got {args.tol}")
+    if args.resume and args.out:
+        raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
+    if args.resume:
+        path, resume = args.resume, True
+    elif args.out:
+        path, resume = args.out, False
+    else:
+        path, resume = unique_run_path(writable_dir("runs/map"), f"map-{args.config}"), False
+    if args.plot:
+        writable_dir(args.plot)
+    try:
+        res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
+                            scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
+                            protocol={"kind": "hold", "tol": args.tol},
+                            settings={"engine": args.engine} if args.engine != "pybullet" else None)
+    except StudyInterrupted as exc:
+        print(f"archdem: study interrupted: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"archdem: interrupted; finished cases are stored, continue with --resume {path}", file=sys.stderr)
+        return 130
+    if args.plot:
+        res.figures(args.plot)
+    if args.json:
+        print_json(res.to_json())
+        return 0
+
+    def f(v):
+        return "   -  " if v is None else f"{v:6.3f}"
+
+    print(f"friction map ({args.config}, mu_base {args.mu_base:g}, {len(mus)} friction values, "
+          f"{res.rounds} bisection rounds): {res.n_cases} tilts, {res.n_failed} failed, {res.wall_s:.0f} s -> {path}")
+    print(f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP  mu*2bar  lambda_ns  status")
+    for s in res.specimens:
+        th = s.threshold
+        br = f"[{f(th.lo)},{f(th.hi)}]"
+        print(f"{s.id:<22} {s.arch.Sh:5.2f} {s.arch.Sd:5.2f}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
+              f"{f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  {th.status}"
+              f"{'' if th.monotonic else ' (non-monotonic)'}")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("map", help="friction-threshold map: DEM tilt lambda(mu), mode(mu) and mu* per specimen")
+    p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
+    p.add_argument("--config", choices=("glued", "free"), default="glued")
+    p.add_argument("--mu", default="0.3:1.5:0.1", help="joint friction grid START:STOP:STEP or a,b,c "
+                   "(default 0.3:1.5:0.1, 13 values)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
+    p.add_argument("--refine", type=int, default=3, help="bisection steps on mu* after the grid (default 3)")
+    p.add_argument("--tol", type=float, default=0.02, help="relative lambda tolerance of each tilt (default 0.02)")
+    p.add_argument("--workers", type=int, default=None, help="local worker processes (default: all cores)")
+    add_engine_argument(p)
+    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
+    p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")
+    p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/map/map-CONFIG[-N].h5)")
+    p.add_argument("--full-scale", dest="full_scale", action="store_true",
+                   help="use the full-scale parametric set (spans 5/10/20 m, 8 voussoirs per side)")
+    p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
+    p.add_argument("--json", action="store_true", help="print JSON per specimen")
+    p.set_defaults(func=_run)

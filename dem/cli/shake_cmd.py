@@ -1,0 +1,180 @@
+"""``archdem shake`` (one shake-table run), ``archdem threshold`` (least collapsing sine
+amplitude and survival bands) and ``archdem animate`` (animation of a run file)."""
+from __future__ import annotations
+
+import argparse
+import math
+
+from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from specimens.errors import ArchdemInputError
+
+
+def _positive(name: str, v: float | None) -> None:
+    if v is not None and not (math.isfinite(v) and v > 0):
+        raise ArchdemInputError(f"{name} must be a positive number, got {v}")
+
+
+def _model_and_settings(args: argparse.Namespace):
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from specimens.blocks import discretise
+
+    label, arch = arch_from_args(args)
+    if args.id is None and args.Ri is None and args.Sh is None:
+        raise ArchdemInputError("give a specimen id or the arch parameters")
+    _positive("--mu-joint", args.mu_joint)
+    _positive("--mu-base", args.mu_base)
+    asm = discretise(arch, config=args.config, **discretisation_kwargs(args))
+    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
+    if args.dt is not None:
+        _positive("--dt", args.dt)
+        kw["dt"] = args.dt
+    return label, arch, asm, from_assembly(asm, name=label), Settings(**kw)
+
+
+def _motion(args: argparse.Namespace):
+    from analytic.inputs import G, SinePulse
+
+    if (args.sine is None) == (args.record is None):
+        raise ArchdemInputError("give exactly one input: --sine FREQ --amplitude A_G, or --record FILE")
+    if args.sine is not None:
+        _positive("--sine", args.sine)
+        if args.amplitude is None:
+            raise ArchdemInputError("--sine needs --amplitude A_G (in g)")
+        _positive("--amplitude", args.amplitude)
+        if args.scale is not None or args.pga is not None:
+            raise ArchdemInputError("--scale/--pga go with --record")
+        return SinePulse(args.amplitude * G, args.sine)
+    from analytic.records import baseline_correct, read_record
+
+    if args.amplitude is not None:
+        raise ArchdemInputError("--amplitude goes with --sine; scale a record with --scale or --pga")
+    if args.scale is not None and args.pga is not None:
+        raise ArchdemInputError("give --scale or --pga, not both")
+    m = read_record(args.record, units=args.units)
+    if args.baseline:
+        m = baseline_correct(m)
+    if args.scale is not None:
+        if not math.isfinite(args.scale) or args.scale == 0:
+            raise ArchdemInputError(f"--scale must be a non-zero number, got {args.scale}")
+        m = m.scaled(args.scale)
+    if args.pga is not None:
+        _positive("--pga", args.pga)
+        m = m.to_pga(args.pga * G)
+    return m
+
+
+def _run_shake(args: argparse.Namespace) -> int:
+    from dem.atomic import unique_run_path
+    from dem.shake import ShakeProtocol, save_shake, shake
+
+    motion = _motion(args)
+    label, _, _, model, settings = _model_and_settings(args)
+    proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full)
+    out = writable_dir(args.out)
+    if args.plot:
+        writable_file(args.plot, overwrite=False)
+    res = shake(model, motion, settings, proto, label=label)
+    stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
+    path = save_shake(res, unique_run_path(out, stem))
+    if args.plot:
+        from dem.figures_shake import save_shake_figure
+
+        save_shake_figure(res, args.plot)
+    s = res.summary()
+    if args.json:
+        print_json(s)
+        return 0
+    act = ", ".join(f"{j['joint']}:{j['state']}" for j in s["joints"] if j["state"] != "closed")
+    print(f"{label} ({args.config}, mu {settings.mu_joint:g}/{settings.mu_base:g}), PGA {s['pga_g']:.3f} g: "
+          + (f"COLLAPSE at t = {res.t_collapse:.3f} s ({res.collapse_phase}), {res.mode} [{act}]"
+             if res.collapsed else f"survival, {res.mode}")
+          + f"; crown peak {res.peak_crown_mm:.2f} mm, residual {res.residual_crown_mm:.2f} mm; "
+            f"{res.sim.wall_s:.1f} s -> {path}")
+    return 0
+
+
+def _run_threshold(args: argparse.Namespace) -> int:
+    from dem.shake import ShakeProtocol
+    from dem.shake_domain import static_onset
+    from dem.thresholds import threshold
+
+    _positive("--sine", args.sine)
+    label, arch, _, model, settings = _model_and_settings(args)
+    lam = static_onset(arch, args.config, settings.mu_joint, settings.mu_base, discretisation_kwargs(args))
+    a_min = args.a_min if args.a_min is not None else lam
+    _positive("--a-min", a_min)
+    a_max = args.a_max if args.a_max is not None else 5.0 * a_min
+    _positive("--tol", args.tol)
+    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail), a_min_g=a_min, a_max_g=a_max,
+                    scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
+    s = {"id": label, "lambda": lam, "config": args.config, "mu_joint": settings.mu_joint,
+         "mu_base": settings.mu_base, **res.summary()}
+    if args.json:
+        print_json(s)
+        return 0
+    if res.amplitude_g is None:
+        print(f"{label} {args.sine:g} Hz: no collapse up to {a_max:.3f} g ({res.n_sims} runs, {res.wall_s:.1f} s)")
+        return 0
+    above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in res.survival_bands_above)
+    print(f"{label} {args.sine:g} Hz: least collapsing amplitude {res.amplitude_g:.4f} g "
+          f"(bracket {res.bracket_g[0]:.4f}-{res.bracket_g[1]:.4f}, {res.mode}, {res.phase}); static lambda {lam:.4f}"
+          + (f"; survives again {above}" if above else "") + f"; {res.n_sims} runs, {res.wall_s:.1f} s")
+    return 0
+
+
+def _run_animate(args: argparse.Namespace) -> int:
+    from dem.animate import animate
+
+    out = animate(args.run, args.out, fps=args.fps, max_frames=args.frames)
+    print(out)
+    return 0
+
+
+def _common(p: argparse.ArgumentParser) -> None:
+    add_arch_arguments(p)
+    p.add_argument("--config", choices=("glued", "free"), default="glued")
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
+    p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
+    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 1e-3)")
+    add_engine_argument(p)
+    p.add_argument("--tail", type=float, default=1.0, help="zero-acceleration tail after the motion [s] (default 1)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+
+
+def register(sub) -> None:
+    p = sub.add_parser("shake", help="virtual shake table: one sine pulse or recorded accelerogram",
+                       description="One shake-table run (uniform inertial field, fixed base).")
+    _common(p)
+    p.add_argument("--sine", type=float, default=None, metavar="FREQ", help="one-cycle sine pulse of FREQ [Hz]")
+    p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help="sine amplitude [g]")
+    p.add_argument("--record", default=None, metavar="FILE", help="accelerogram (.AT2, .smc, ESM ASCII, CSV)")
+    p.add_argument("--units", default=None, help="record units if the file does not say (g, m/s2, cm/s2, mm/s2)")
+    p.add_argument("--scale", type=float, default=None, help="record scale factor")
+    p.add_argument("--pga", type=float, default=None, metavar="A_G", help="scale the record to this PGA [g]")
+    p.add_argument("--baseline", action="store_true", help="baseline-correct the record (linear velocity fit)")
+    p.add_argument("--duration", type=float, default=None, help="simulated time [s] (default: motion + tail)")
+    p.add_argument("--full", action="store_true", help="keep simulating after collapse (default: stop)")
+    p.add_argument("--out", default="runs/shake", help="directory for the run file (default runs/shake)")
+    p.add_argument("--plot", default=None, help="time-history figure (.png/.pdf/.svg)")
+    p.set_defaults(func=_run_shake)
+
+    q = sub.add_parser("threshold", help="least collapsing one-cycle sine amplitude (scan + bisection)",
+                       description="Least collapsing amplitude of a one-cycle sine: amplitude scan, bisection of "
+                                   "the lowest collapsing bracket, and every survival band above it.")
+    _common(q)
+    q.add_argument("--sine", type=float, required=True, metavar="FREQ", help="sine frequency [Hz]")
+    q.add_argument("--a-min", dest="a_min", type=float, default=None, help="scan start [g] (default: static lambda)")
+    q.add_argument("--a-max", dest="a_max", type=float, default=None, help="scan end [g] (default 5 x start)")
+    q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=1.15, help="scan step ratio (default 1.15)")
+    q.add_argument("--tol", type=float, default=0.01, help="relative bisection tolerance (default 0.01)")
+    q.add_argument("--workers", type=int, default=None, help="processes for the scan (default: all cores)")
+    q.set_defaults(func=_run_threshold)
+
+    r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")
+    r.add_argument("run", help="run file (.h5) written by `archdem tilt` or `archdem shake`")
+    r.add_argument("--out", required=True, help="FILE.gif or FILE.mp4 (never overwritten)")
+    r.add_argument("--fps", type=int, default=25)
+    r.add_argument("--frames", type=int, default=200, help="most frames (default 200)")
+    r.set_defaults(func=_run_animate)

@@ -1,0 +1,64 @@
+"""``archdem tilt``: the virtual tilt test of one arch."""
+from __future__ import annotations
+
+import argparse
+import math
+
+from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from specimens.errors import ArchdemInputError
+
+
+def _run(args: argparse.Namespace) -> int:
+    from dem.atomic import unique_run_path
+    from dem.model import from_assembly
+    from dem.protocols import TiltProtocol, tilt
+    from dem.results import save_result
+    from dem.settings import Settings
+    from specimens.blocks import discretise
+
+    label, arch = arch_from_args(args)
+    if args.id is None and args.Ri is None and args.Sh is None:
+        raise ArchdemInputError("give a specimen id or the arch parameters")
+    for name in ("mu_joint", "mu_base"):
+        v = getattr(args, name)
+        if not (math.isfinite(v) and v > 0):
+            raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
+    asm = discretise(arch, config=args.config, **discretisation_kwargs(args))
+    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
+    if args.dt is not None:
+        kw["dt"] = args.dt
+    settings = Settings(**kw)
+    out = writable_dir(args.out)
+    if args.plot:
+        writable_file(args.plot)
+    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol), label=label)
+    path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
+    if args.plot:
+        from dem.figures import save_tilt_figure
+
+        save_tilt_figure(res, args.plot)
+    s = res.summary()
+    if args.json:
+        print_json(s)
+    else:
+        hinges = ", ".join(f"{j['joint']}:{j['state']}" for j in s["joints"] if j["state"] != "closed")
+        print(f"{label} ({args.config}, mu {args.mu_joint:g}/{args.mu_base:g}, {args.protocol}): "
+              f"lambda = {res.lam:.4f} (theta = {res.theta_deg:.2f} deg), bracket [{res.bracket[0]:.4f}, "
+              f"{res.bracket[1]:.4f}], {res.mode} [{hinges}], {res.n_sims} simulations, {res.wall_s:.1f} s -> {path}")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("tilt", help="virtual tilt test (collapse multiplier lambda = tan theta and failure mode)")
+    add_arch_arguments(p)
+    p.add_argument("--config", choices=("glued", "free"), default="glued")
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
+    p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default="hold")
+    p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
+    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 1e-3)")
+    add_engine_argument(p)
+    p.add_argument("--out", default="runs/tilt", help="directory for the result file (default runs/tilt)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")
+    p.set_defaults(func=_run)

@@ -1,0 +1,327 @@
+"""Virtual experiments: ``simulate`` (any load) and the tilt test (hold-and-bisect, staircase, ramp).
+
+``simulate(model, settings, load, duration)`` is the one entry point: it builds an engine,
+applies ``load.gravity(t)`` before every step, records poses every ``settings.record_every``
+and applies the collapse criterion of :mod:`dem.detect`. A shake-table test is ``simulate``
+with a :class:`dem.load.GroundShake` load.
+
+Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horizontal part +x):
+
+* ``hold`` (default): a level lambda is reached by a smooth 1 s ramp and held ``hold_time``;
+  the threshold is bracketed (a fast continuous ramp gives the first estimate) and bisected
+  until the bracket is narrower than ``tol`` relative. The answer is the upper end of the
+  bracket (first collapsing level); non-monotonic outcomes near the threshold (spec 04) make
+  thresholds reproducible to about +-1 %.
+* ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time.
+* ``ramp``: one simulation at a constant rate; lambda read at collapse detection.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from dem import detect
+from dem.engines import get_engine
+from dem.load import Load, TiltHold, TiltRamp, TiltStairs
+from dem.model import Model
+from dem.settings import Settings
+from specimens.errors import ArchdemInputError
+
+
+@dataclass
+class History:
+    """Time history sampled every ``record_every``: t (nt,), pos (nt, n, 3), quat (nt, n, 4)
+    (x, y, z, w, relative to the initial orientation), gravity (nt, 3), dmax (nt,) largest point
+    displacement [m], ke (nt,) kinetic energy [J], fpower (nt,) friction dissipation rate [W]
+    (NaN if the engine gives no contact forces)."""
+
+    t: np.ndarray
+    pos: np.ndarray
+    quat: np.ndarray
+    gravity: np.ndarray
+    dmax: np.ndarray
+    ke: np.ndarray
+    fpower: np.ndarray
+
+    def rotations(self) -> np.ndarray:
+        from scipy.spatial.transform import Rotation
+
+        nt, n = self.quat.shape[:2]
+        return Rotation.from_quat(self.quat.reshape(-1, 4)).as_matrix().reshape(nt, n, 3, 3)
+
+    @property
+    def friction_work(self) -> float:
+        """Friction work [J] (rectangle rule over the samples)."""
+        if len(self.t) < 2 or not np.all(np.isfinite(self.fpower)):
+            return float("nan")
+        return float(np.sum(self.fpower[1:] * np.diff(self.t)))
+
+
+@dataclass
+class SimResult:
+    """One simulation: load description, history, collapse and mode read from the history."""
+
+    load: dict
+    duration: float
+    history: History
+    collapsed: bool
+    t_collapse: float
+    joints: list
+    mode: str
+    out_of_plane: dict
+    wall_s: float
+    steps: int
+
+
+def _kinetic_energy(model: Model, v: np.ndarray, w: np.ndarray, R: np.ndarray) -> float:
+    ke = 0.0
+    for i, b in enumerate(model.bodies):
+        Iw = R[i] @ b.inertia @ R[i].T
+        ke += 0.5 * b.mass * float(v[i] @ v[i]) + 0.5 * float(w[i] @ Iw @ w[i])
+    return ke
+
+
+def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray) -> float:
+    c = engine.contacts()
+    if c is None:
+        return float("nan")
+    if len(c.fn) == 0:
+        return 0.0
+
+    def vel(idx, p):
+        out = np.zeros_like(p)
+        m = idx >= 0
+        out[m] = v[idx[m]] + np.cross(w[idx[m]], p[m] - pos[idx[m]])
+        return out
+
+    vrel = vel(c.a, c.point) - vel(c.b, c.point)
+    vt = vrel - (vrel * c.normal).sum(1, keepdims=True) * c.normal
+    return float(np.sum(np.linalg.norm(c.ft, axis=1) * np.linalg.norm(vt, axis=1)))
+
+
+def simulate(model: Model, settings: Settings, load: Load, duration: float, record_every: float | None = None,
+             stop_on_collapse: bool = True, friction_work: bool = True, engine=None) -> SimResult:
+    """Run ``load`` on ``model`` for ``duration`` [s]; stop at collapse if ``stop_on_collapse``.
+
+    ``record_every`` [s] defaults to ``settings.record_every``; the collapse criterion is
+    checked at each record. ``engine``: an unbuilt backend (default: ``settings.engine``).
+    """
+    from scipy.spatial.transform import Rotation
+
+    if not (duration > 0 and math.isfinite(duration)):
+        raise ArchdemInputError(f"simulation duration must be > 0 s, got {duration!r}")
+    wall0 = time.perf_counter()
+    eng = engine if engine is not None else get_engine(settings.engine)
+    rec = max(1, int(round((record_every or settings.record_every) / settings.dt)))
+    n_steps = int(round(duration / settings.dt))
+    tracker = detect.PointTracker(model)
+    d_c = settings.collapse_fraction * model.size
+    T, P, Q, Gv, D, KE, FP = [], [], [], [], [], [], []
+    collapsed, t_col = False, float("nan")
+    try:
+        eng.build(model, settings)
+        step = 0
+
+        def record() -> tuple[float, int]:
+            pos, R = eng.poses()
+            v, w = eng.velocities()
+            d, i = tracker.max_displacement(pos, R)
+            T.append(step * settings.dt)
+            P.append(pos)
+            Q.append(Rotation.from_matrix(R).as_quat())
+            Gv.append(load.gravity(step * settings.dt))
+            D.append(d)
+            KE.append(_kinetic_energy(model, v, w, R))
+            FP.append(_friction_power(eng, v, w, pos) if friction_work else float("nan"))
+            return d, tracker.body_speed(v, w, i)
+
+        record()
+        while step < n_steps:
+            n = min(rec, n_steps - step)
+            for _ in range(n):
+                eng.set_gravity(load.gravity(step * settings.dt))
+                eng.step(1)
+                step += 1
+            d, speed = record()
+            if not collapsed and d > d_c and speed > settings.collapse_speed:
+                collapsed, t_col = True, step * settings.dt
+                if stop_on_collapse:
+                    break
+    finally:
+        eng.close()
+    hist = History(np.array(T), np.array(P), np.array(Q), np.array(Gv), np.array(D), np.array(KE), np.array(FP))
+    joints, mode = read_mode(model, settings, hist)
+    Rs = hist.rotations()
+    oop = detect.out_of_plane(model, hist.pos[-1], Rs[-1])
+    oop["max_dz_history_m"] = max(float(np.abs(u[:, 2]).max()) for k in range(len(hist.t))
+                                  for u in tracker.displacements(hist.pos[k], Rs[k]))
+    return SimResult(load.describe(), duration, hist, collapsed, t_col, joints, mode, oop,
+                     time.perf_counter() - wall0, step)
+
+
+def read_mode(model: Model, settings: Settings, hist: History) -> tuple[list[detect.JointState], str]:
+    """Joint states and mode over the mode window of ``hist`` (or over the whole history when
+    the largest displacement never reached the window: then the states describe creep)."""
+    lo, hi = (f * model.size for f in settings.mode_window)
+    Rs = hist.rotations()
+    i0 = int(np.argmax(hist.dmax >= lo)) if np.any(hist.dmax >= lo) else 0
+    i1 = int(np.argmax(hist.dmax >= hi)) if np.any(hist.dmax >= hi) else len(hist.t) - 1
+    if i1 <= i0:
+        i0, i1 = 0, len(hist.t) - 1
+    states, mode = detect.classify(model, settings, hist.pos[i0], Rs[i0], hist.pos[i1], Rs[i1],
+                                   float(hist.dmax[i1] - hist.dmax[i0]))
+    if not np.any(hist.dmax >= lo):
+        mode = "none"
+    return states, mode
+
+
+# ------------------------------------------------------------------------------------- tilt
+@dataclass(frozen=True)
+class TiltProtocol:
+    """Tilt-test protocol parameters (stored with each result)."""
+
+    kind: str = "hold"  # hold | staircase | ramp
+    ramp_time: float = 1.0  # hold: smooth ramp to each level [s]
+    hold_time: float = 2.0  # hold: time held at the level [s]
+    tol: float = 0.005  # hold: relative bracket width at which bisection stops
+    scan_rate: float = 0.25  # hold: rate of the first-estimate ramp [1/s]
+    max_sims: int = 30
+    step: float = 0.01  # staircase: lambda increment
+    stair_hold: float = 0.5  # staircase: hold per step [s]
+    rate: float = 0.02  # ramp: d lambda / dt [1/s]
+    lam_max: float = 3.0  # give up above this lambda
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("hold", "staircase", "ramp"):
+            raise ArchdemInputError(f"tilt protocol must be hold, staircase or ramp, got {self.kind!r}")
+        for k in ("ramp_time", "hold_time", "tol", "scan_rate", "step", "stair_hold", "rate", "lam_max"):
+            v = getattr(self, k)
+            if not (math.isfinite(v) and v > 0):
+                raise ArchdemInputError(f"tilt protocol {k} must be > 0, got {v!r}")
+
+
+@dataclass
+class TiltResult:
+    """The answer of a tilt test."""
+
+    label: str
+    model: Model
+    settings: Settings
+    protocol: TiltProtocol
+    lam: float
+    bracket: tuple[float, float]
+    n_sims: int
+    wall_s: float
+    mode: str
+    joints: list
+    levels: list  # (lambda, collapsed) of each simulation, in order
+    collapse: SimResult | None
+    stable: SimResult | None
+    criterion: dict
+    versions: dict = field(default_factory=dict)
+    result_file: str = ""
+
+    @property
+    def theta_deg(self) -> float:
+        return math.degrees(math.atan(self.lam))
+
+    @property
+    def out_of_plane(self) -> dict:
+        return self.collapse.out_of_plane if self.collapse is not None else {}
+
+    def summary(self) -> dict:
+        """The JSON answer of ``archdem tilt``."""
+        return {
+            "id": self.label, "lambda": self.lam, "theta_deg": self.theta_deg, "mode": self.mode,
+            "joints": [j.to_dict() if hasattr(j, "to_dict") else j for j in self.joints],
+            "bracket": list(self.bracket), "n_sims": self.n_sims, "wall_s": self.wall_s,
+            "protocol": self.protocol.kind, "config": self.model.source.get("config", ""),
+            "mu_joint": self.settings.mu_joint, "mu_base": self.settings.mu_base, "planar": self.settings.planar,
+            "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
+            "out_of_plane": self.out_of_plane, "result_file": self.result_file,
+        }
+
+
+def _hold(model, settings, proto, lam) -> SimResult:
+    return simulate(model, settings, TiltHold(lam, proto.ramp_time, g=settings.g), proto.ramp_time + proto.hold_time)
+
+
+def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol | None = None,
+         label: str | None = None) -> TiltResult:
+    """Tilt test of ``model`` (see module docstring)."""
+    settings = settings or Settings()
+    proto = protocol or TiltProtocol()
+    wall0 = time.perf_counter()
+    levels: list[tuple[float, bool]] = []
+    collapse = stable = None
+    if proto.kind == "hold":
+        scan = simulate(model, settings, TiltRamp(proto.scan_rate, g=settings.g), proto.lam_max / proto.scan_rate)
+        n = 1
+        if not scan.collapsed:
+            raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+        est = proto.scan_rate * scan.t_collapse
+        hi, lo = est, 0.85 * est
+        r = _hold(model, settings, proto, hi)
+        n += 1
+        levels.append((hi, r.collapsed))
+        while not r.collapsed:
+            lo, stable = hi, r
+            hi *= 1.1
+            if hi > proto.lam_max or n >= proto.max_sims:
+                raise ArchdemInputError(f"no collapse up to lambda = {hi:g} under held levels")
+            r = _hold(model, settings, proto, hi)
+            n += 1
+            levels.append((hi, r.collapsed))
+        collapse = r
+        if stable is None:
+            while True:
+                r = _hold(model, settings, proto, lo)
+                n += 1
+                levels.append((lo, r.collapsed))
+                if not r.collapsed:
+                    stable = r
+                    break
+                hi, collapse = lo, r
+                lo *= 0.85
+                if n >= proto.max_sims:
+                    break
+        while (hi - lo) > proto.tol * hi and n < proto.max_sims:
+            mid = 0.5 * (lo + hi)
+            r = _hold(model, settings, proto, mid)
+            n += 1
+            levels.append((mid, r.collapsed))
+            if r.collapsed:
+                hi, collapse = mid, r
+            else:
+                lo, stable = mid, r
+        lam, bracket = hi, (lo, hi)
+    elif proto.kind == "staircase":
+        load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
+        period = proto.stair_hold + load.rise
+        r = simulate(model, settings, load, period * math.ceil(proto.lam_max / proto.step))
+        n = 1
+        if not r.collapsed:
+            raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+        k = math.floor(r.t_collapse / period - 1e-9)
+        hi = load.level(r.t_collapse)
+        lo = proto.step * k
+        hi_step = proto.step * (k + 1)
+        levels.append((hi, True))
+        collapse, lam, bracket = r, hi_step, (lo, hi_step)
+    else:
+        r = simulate(model, settings, TiltRamp(proto.rate, g=settings.g), proto.lam_max / proto.rate)
+        n = 1
+        if not r.collapsed:
+            raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+        lam = proto.rate * r.t_collapse
+        levels.append((lam, True))
+        collapse, bracket = r, (proto.rate * (r.t_collapse - settings.record_every), lam)
+    from dem.provenance import provenance
+
+    return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
+                      n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
+                      collapse.joints if collapse else [], levels, collapse, stable,
+                      detect.criterion(settings, model), provenance())

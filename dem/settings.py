@@ -1,0 +1,104 @@
+"""All physical, contact, solver and detection settings of a simulation — one frozen object.
+
+Every field has a default that passes the validation of spec §3.4; the comment next to each
+gives the measurement behind it (PyBullet 3.2.7, catalogue specimens, see
+``benchmarks/validate_dem.py`` and spec 04 §4.1). The object is stored in every result file.
+
+Measured with these defaults (benchmarks/results/validate_dem.md, 11 specimens x glued/free):
+rest drift in 5 s 0.017-0.102 mm (largest point displacement of any body); single block
+lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda 0.6-4.1 % below the discrete LP
+(one outlier, free Sh1-Sd025, -8.5 % with a disordered crown collapse), hinge layout equal to
+the LP's on 20 of 22.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, fields, replace
+
+from analytic.inputs import G
+from specimens.catalogue import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.errors import ArchdemInputError
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Simulation settings (SI units)."""
+
+    # --- physics -------------------------------------------------------------------------
+    mu_joint: float = REFERENCE_MU_JOINT  # block-block Coulomb friction (tan 30 deg)
+    mu_base: float = REFERENCE_MU_BASE  # block-base Coulomb friction (tan 45 deg)
+    restitution: float = 0.0  # normal restitution; 0 = plastic impacts (masonry)
+    g: float = G  # gravity magnitude [m/s^2]; the tilt rotates it at constant magnitude
+    planar: bool = False  # True: out-of-plane velocities zeroed after every step (2D comparison)
+    # --- engine --------------------------------------------------------------------------
+    engine: str = "pybullet"
+    dt: float = 1e-3  # [s]; 2 ms drifts 0.05-0.5 mm in 10 s (spec 04), 1 ms passes the 0.1 mm/5 s rest test
+    solver_iterations: int = 200  # 100 iterations drift up to 0.5 mm in 10 s; 200 pass the rest test
+    contact_slop: float = 0.0  # PyBullet default 1e-5 m sinks every joint 10 um (~0.1 mm crown drop)
+    warm_starting: float = 1.0  # PyBullet default 0.1 creeps; 1.0 lets contact impulses persist at rest
+    friction_anchor: bool = True  # anchors static friction: no creep of blocks at rest
+    sat_features: bool = True  # polyhedral contact (4 points per face) instead of a ~1 mm hull margin
+    inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0
+    inflate_normal: bool = False  # False: vertices pushed 1 um radially from the piece centroid
+    #   (specimens.mesh.prism); True: faces offset along their normals. Full validation of both:
+    #   same lambda bias within run-to-run scatter (+-1-2 %), but the normal offset let 5 free
+    #   specimens drift 0.10-1.0 mm in 5 s at rest against <= 0.102 mm for the radial one.
+    contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (0.16-0.25 mm in 5 s)
+    friction_erp: float = 1.0  # friction drift correction; default left free Sh06-Sd010 creeping 0.7 mm
+    #   in 5 s at its crown joints (near the friction limit at rest), 0.8 -> 0.14 mm, 1.0 -> 0.09 mm (plateau)
+    # --- detection (spec §3.3) -----------------------------------------------------------
+    collapse_fraction: float = 0.06  # collapse: any body point moved > this x size (ring thickness)
+    collapse_speed: float = 1e-3  # ... while that body still moves faster than this [m/s]
+    mode_window: tuple[float, float] = (0.015, 0.06)  # mode read between these displacements / size
+    hinge_fraction: float = 0.05  # joint opens (hinge) if its opening increment > this x window increment
+    slide_fraction: float = 0.05  # joint slides if its slip increment > this x window increment
+    record_every: float = 0.01  # [s] time-history sampling (and collapse check) interval
+
+    def __post_init__(self) -> None:
+        pos = {"mu_joint": self.mu_joint, "mu_base": self.mu_base, "g": self.g, "dt": self.dt,
+               "collapse_fraction": self.collapse_fraction, "record_every": self.record_every}
+        for k, v in pos.items():
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ArchdemInputError(f"setting {k} must be a positive number, got {v!r}")
+        if not (0.0 <= self.restitution <= 1.0):
+            raise ArchdemInputError(f"restitution must be in [0, 1], got {self.restitution!r}")
+        if not (isinstance(self.solver_iterations, int) and self.solver_iterations >= 1):
+            raise ArchdemInputError(f"solver iterations must be an integer >= 1, got {self.solver_iterations!r}")
+        if self.record_every < self.dt:
+            raise ArchdemInputError(f"record interval {self.record_every:g} s is shorter than dt {self.dt:g} s")
+        if self.dt > 0.01:
+            raise ArchdemInputError(f"time step dt = {self.dt:g} s is too large (use <= 0.01 s; default 1e-3)")
+        lo, hi = self.mode_window
+        if not (0 < lo < hi <= self.collapse_fraction):
+            raise ArchdemInputError("mode window must satisfy 0 < lo < hi <= collapse_fraction")
+
+    @property
+    def record_steps(self) -> int:
+        """Steps between records."""
+        return max(1, int(round(self.record_every / self.dt)))
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d["mode_window"] = list(self.mode_window)
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Settings":
+        names = {f.name for f in fields(cls)}
+        kw = {k: v for k, v in d.items() if k in names}
+        if "mode_window" in kw:
+            kw["mode_window"] = tuple(float(x) for x in kw["mode_window"])
+        for k in ("planar", "friction_anchor", "sat_features", "inflate_normal"):
+            if k in kw:
+                kw[k] = bool(kw[k])
+        if "solver_iterations" in kw:
+            kw["solver_iterations"] = int(kw["solver_iterations"])
+        if "engine" in kw and isinstance(kw["engine"], bytes):
+            kw["engine"] = kw["engine"].decode()
+        return cls(**kw)
+
+    def with_(self, **kw) -> "Settings":
+        return replace(self, **kw)
+
+
+NO_SLIDING_MU = 10.0  # friction "high enough to prevent sliding" of the validation (spec §3.4)

@@ -1,0 +1,261 @@
+"""Virtual shake table: one run of a horizontal ground motion on a rigid-block model.
+
+Load: the uniform inertial field of :class:`dem.load.GroundShake` (fixed base, every body feels
+``(-a_g(t), -g, 0)``). It is exact for a rigid table and needs no kinematic body (PyBullet has
+none); a driven base is not implemented (see the module report of the issue).
+
+Run: the motion, then a zero tail (``ShakeProtocol.tail`` [s]) so that a rocking arch either
+comes back to rest or falls. Poses are recorded every ``ShakeProtocol.record_every`` [s].
+
+**Collapse in a shake** (spec §3.3, no per-specimen tuning): some body point has moved more than
+``collapse_fraction x size`` (size = ring thickness of an arch, height of a single block) while
+that body still moves faster than ``Settings.collapse_speed``. The fraction is 1.0 by default,
+larger than the 0.06 of the tilt test: under a pulse a mechanism may open well past its static
+limit during the input and still close again (spec 02: passing ``phi_cr`` while the input acts
+is not collapse), whereas a body point displaced by a full ring thickness (a block: by its
+height, i.e. rotated ~2 x its slenderness angle) is falling.
+
+**First impact / rebound**: from the horizontal displacement ``u(t)`` of the crown body's
+centroid (the block's centroid for a single block). The motion starts when ``|u|`` first
+exceeds ``onset_mm`` (default 0.1 mm, above the at-rest drift of spec 04); the first rebound is
+the first later instant where the crown velocity ``du/dt`` changes sign (the first extremum of
+``u``): the opening mechanism stops and closes back, which is where the analytic model's first
+impact follows. ``collapse_phase`` is ``"before-first-rebound"`` (the analytic
+``first-half-cycle`` mode) if collapse is detected before that instant (or no reversal
+happened), else ``"after-first-rebound"`` (the analytic ``after-impact`` mode).
+
+Crown displacement: ``peak_crown_mm`` = max ``|u|`` [mm] over the record; ``residual_crown_mm``
+= ``u`` at the end of the record (for a collapsed run: at the collapse detection, since the run
+stops there by default).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+from analytic.inputs import G, GroundMotion
+from dem.load import GroundShake
+from dem.model import Model
+from dem.protocols import SimResult, simulate
+from dem.settings import Settings
+from specimens.errors import ArchdemInputError
+
+FORMAT = "archdem-shake-1"
+
+
+@dataclass(frozen=True)
+class ShakeProtocol:
+    """Parameters of a shake run (stored with each result)."""
+
+    tail: float = 1.0  # zero acceleration after the motion [s]
+    duration: float | None = None  # total simulated time [s]; default motion duration + tail
+    collapse_fraction: float = 1.0  # collapse: a point moved > this x size while moving
+    record_every: float = 0.005  # [s] history sampling (and collapse check)
+    onset_mm: float = 0.1  # crown displacement at which the motion is said to start [mm]
+    stop_on_collapse: bool = True
+    load: str = "inertial"  # only the uniform inertial field is implemented
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.tail) and self.tail >= 0):
+            raise ArchdemInputError(f"zero tail must be >= 0 s, got {self.tail!r}")
+        if self.duration is not None and not (math.isfinite(self.duration) and self.duration > 0):
+            raise ArchdemInputError(f"--duration must be a positive number of seconds, got {self.duration!r}")
+        for k in ("collapse_fraction", "record_every", "onset_mm"):
+            v = getattr(self, k)
+            if not (math.isfinite(v) and v > 0):
+                raise ArchdemInputError(f"shake protocol {k} must be > 0, got {v!r}")
+        if self.load != "inertial":
+            raise ArchdemInputError(f"load {self.load!r} is not available; only 'inertial' (uniform inertial field)")
+
+    def total_duration(self, motion: GroundMotion) -> float:
+        return float(self.duration) if self.duration is not None else float(motion.duration) + self.tail
+
+
+@dataclass
+class ShakeResult:
+    """Outcome of one shake run (SI inside; the summary reports mm and g)."""
+
+    label: str
+    model: Model
+    settings: Settings
+    protocol: ShakeProtocol
+    motion: GroundMotion
+    sim: SimResult
+    crown_u: np.ndarray  # (nt,) horizontal crown displacement [m] at sim.history.t
+    t_start: float | None  # motion onset [s] (|u| > onset_mm)
+    t_rebound: float | None  # first reversal of the crown velocity after the onset [s]
+    collapse_phase: str | None  # before-first-rebound | after-first-rebound | None (no collapse)
+    criterion: dict
+    versions: dict = field(default_factory=dict)
+    result_file: str = ""
+
+    @property
+    def collapsed(self) -> bool:
+        return bool(self.sim.collapsed)
+
+    @property
+    def t_collapse(self) -> float | None:
+        return float(self.sim.t_collapse) if self.sim.collapsed else None
+
+    @property
+    def mode(self) -> str:
+        return self.sim.mode
+
+    @property
+    def peak_crown_mm(self) -> float:
+        return float(np.max(np.abs(self.crown_u)) * 1e3) if len(self.crown_u) else 0.0
+
+    @property
+    def residual_crown_mm(self) -> float:
+        return float(self.crown_u[-1] * 1e3) if len(self.crown_u) else 0.0
+
+    def summary(self) -> dict:
+        """The JSON answer of ``archdem shake``."""
+        m = self.motion.describe()
+        return {
+            "id": self.label, "collapsed": self.collapsed, "t_collapse": self.t_collapse, "mode": self.mode,
+            "collapse_phase": self.collapse_phase, "t_motion_start": self.t_start, "t_first_rebound": self.t_rebound,
+            "peak_crown_mm": self.peak_crown_mm, "residual_crown_mm": self.residual_crown_mm,
+            "max_displacement_mm": float(np.max(self.sim.history.dmax) * 1e3),
+            "joints": [j.to_dict() for j in self.sim.joints],
+            "input": m, "pga_g": float(self.motion.pga / G), "duration": self.sim.duration,
+            "config": self.model.source.get("config", ""), "mu_joint": self.settings.mu_joint,
+            "mu_base": self.settings.mu_base, "load": self.protocol.load,
+            "friction_work_J": self.sim.history.friction_work, "out_of_plane": self.sim.out_of_plane,
+            "wall_s": self.sim.wall_s, "steps": self.sim.steps, "result_file": self.result_file,
+        }
+
+
+def shake_settings(settings: Settings, protocol: ShakeProtocol) -> Settings:
+    """``settings`` with the shake collapse fraction and record interval of ``protocol``."""
+    lo, hi = settings.mode_window
+    return settings.with_(collapse_fraction=protocol.collapse_fraction,
+                          record_every=max(protocol.record_every, settings.dt),
+                          mode_window=(lo, min(hi, protocol.collapse_fraction)))
+
+
+def crown_displacement(model: Model, sim: SimResult) -> np.ndarray:
+    """Horizontal displacement [m] of the crown body's centroid at every record."""
+    c0 = float(model.bodies[model.crown].centroid[0])
+    return sim.history.pos[:, model.crown, 0] - c0
+
+
+def first_rebound(t: np.ndarray, u: np.ndarray, onset: float) -> tuple[float | None, float | None]:
+    """``(t_start, t_rebound)`` [s]: first time ``|u| > onset`` [m], then the first sign change of
+    ``du/dt`` after it (linear interpolation of the velocity zero between records); None if absent."""
+    t = np.asarray(t, float)
+    u = np.asarray(u, float)
+    idx = np.nonzero(np.abs(u) > onset)[0]
+    if len(idx) == 0 or len(t) < 3:
+        return None, None
+    k0 = int(idx[0])
+    t_start = float(t[k0])
+    v = np.gradient(u, t)
+    s0 = np.sign(u[k0])  # the direction of the first excursion
+    # after the onset the crown moves along s0; the rebound is the first record where it moves back
+    for k in range(max(k0, 1), len(t)):
+        if v[k] * s0 < 0 and v[k - 1] * s0 >= 0:
+            v0, v1 = v[k - 1], v[k]
+            frac = v0 / (v0 - v1) if v0 != v1 else 0.0
+            return t_start, float(t[k - 1] + frac * (t[k] - t[k - 1]))
+    return t_start, None
+
+
+def shake(model: Model, motion: GroundMotion, settings: Settings | None = None,
+          protocol: ShakeProtocol | None = None, label: str | None = None) -> ShakeResult:
+    """Run ``motion`` (ground acceleration [m/s^2], +x) on ``model``; see the module docstring."""
+    from dem import detect
+    from dem.provenance import provenance
+
+    settings = settings or Settings()
+    proto = protocol or ShakeProtocol()
+    st = shake_settings(settings, proto)
+    duration = proto.total_duration(motion)
+    sim = simulate(model, st, GroundShake(motion, g=st.g), duration, record_every=st.record_every,
+                   stop_on_collapse=proto.stop_on_collapse)
+    u = crown_displacement(model, sim)
+    t_start, t_reb = first_rebound(sim.history.t, u, proto.onset_mm * 1e-3)
+    phase = None
+    if sim.collapsed:
+        phase = "before-first-rebound" if (t_reb is None or sim.t_collapse <= t_reb) else "after-first-rebound"
+    crit = detect.criterion(st, model)
+    crit.update({"first_rebound": "first sign change of the crown horizontal velocity after |u| > onset_mm",
+                 "onset_mm": proto.onset_mm})
+    return ShakeResult(label or model.name, model, st, proto, motion, sim, u, t_start, t_reb, phase, crit,
+                       provenance())
+
+
+def collapses(model: Model, motion: GroundMotion, settings: Settings, protocol: ShakeProtocol) -> tuple[bool, str, str | None]:
+    """``(collapsed, mode, collapse_phase)`` of one run (for amplitude scans)."""
+    r = shake(model, motion, settings, protocol)
+    return r.collapsed, r.mode, r.collapse_phase
+
+
+# ------------------------------------------------------------------------------------ I/O
+def _motion_trace(motion: GroundMotion, duration: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    n = int(math.floor(duration / dt + 1e-9)) + 1
+    t = dt * np.arange(n)
+    return t, np.asarray(motion.acceleration(t), float)
+
+
+def save_shake(result: ShakeResult, path) -> "Path":
+    """Write ``result`` to ``path`` (.h5) atomically, never overwriting: root attributes (format,
+    summary, settings, protocol, criterion, versions), ``model``, ``input`` (``t``, ``a_g`` [m/s^2]
+    sampled at the simulator step, ``motion`` JSON) and ``sim`` (histories, as tilt results)."""
+    from pathlib import Path
+
+    import h5py
+
+    from dem.atomic import atomic_path
+    from dem.results import _js, _write_model, _write_sim
+
+    path = Path(path)
+    result.result_file = str(path)
+    with atomic_path(path) as tmp:
+        with h5py.File(tmp, "w") as f:
+            f.attrs.update({
+                "format": FORMAT, "label": result.label, "collapsed": result.collapsed,
+                "t_collapse": result.t_collapse if result.t_collapse is not None else float("nan"),
+                "mode": result.mode, "summary": _js(result.summary()), "settings": _js(result.settings.to_dict()),
+                "protocol": _js(asdict(result.protocol)), "criterion": _js(result.criterion),
+                "versions": _js(result.versions),
+            })
+            _write_model(f.create_group("model"), result.model)
+            g = f.create_group("input")
+            t, a = _motion_trace(result.motion, result.sim.duration, result.settings.dt)
+            g.attrs["motion"] = _js(result.motion.describe())
+            g.create_dataset("t", data=t, compression="gzip")
+            g.create_dataset("a_g", data=a, compression="gzip")
+            s = f.create_group("sim")
+            _write_sim(s, result.sim)
+            s["crown_u"] = result.crown_u
+    return path
+
+
+def load_shake(path) -> dict:
+    """Read a shake run file: dict with ``model``, ``settings``, ``sim`` (SimResult), ``summary``,
+    ``input_t``, ``input_a`` [m/s^2], ``crown_u`` [m], ``protocol``, ``criterion``."""
+    import json
+
+    import h5py
+
+    from dem.results import _read_model, _read_sim
+
+    with h5py.File(path, "r") as f:
+        if f.attrs.get("format") != FORMAT:
+            raise ArchdemInputError(f"{path} is not an archdem shake result")
+        return {
+            "label": str(f.attrs["label"]), "model": _read_model(f["model"]),
+            "settings": Settings.from_dict(json.loads(f.attrs["settings"])),
+            "protocol": json.loads(f.attrs["protocol"]), "criterion": json.loads(f.attrs["criterion"]),
+            "summary": json.loads(f.attrs["summary"]), "motion": json.loads(f["input"].attrs["motion"]),
+            "input_t": f["input/t"][()], "input_a": f["input/a_g"][()],
+            "sim": _read_sim(f["sim"]), "crown_u": f["sim/crown_u"][()],
+        }
+
+
+__all__ = ["FORMAT", "ShakeProtocol", "ShakeResult", "shake", "collapses", "crown_displacement", "first_rebound",
+           "shake_settings", "save_shake", "load_shake"]
+

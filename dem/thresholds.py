@@ -1,0 +1,228 @@
+"""Shake thresholds: the least collapsing amplitude of a one-cycle sine pulse, and DEM failure
+domains over frequency.
+
+Collapse is not monotonic in the amplitude (spec 04 §4.3: Sh02-Sd020 at 4 Hz collapses from
+~0.45 g but survives again around 0.78-0.9 g), so plain bisection may return either edge of a
+survival window. :func:`threshold` therefore
+
+1. **scans** amplitudes ``a_min .. a_max`` with geometric spacing (ratio ``scan_ratio``), in
+   parallel (``concurrent.futures.ProcessPoolExecutor``, all cores by default);
+2. **bisects** (geometric midpoints) the lowest bracket survival -> collapse until
+   ``hi / lo - 1 <= tol`` (1 % by default); the answer is the upper end ``hi`` (a simulated
+   amplitude that collapsed), as for the tilt test;
+3. reports every band found by the scan (survival / collapse), its edges at the geometric middle
+   of the scan bracket (resolution ``scan_ratio``) except the bisected first threshold.
+
+A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
+(:class:`analytic.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
+in m/s^2 inside; results are reported in g.
+"""
+from __future__ import annotations
+
+import math
+import os
+import time
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+import numpy as np
+
+from analytic.inputs import G, GroundMotion, SinePulse
+from dem.model import Model
+from dem.settings import Settings
+from dem.shake import ShakeProtocol, collapses
+from specimens.errors import ArchdemInputError
+
+
+def sine_motion(amplitude: float, freq: float) -> GroundMotion:
+    """Plain one-cycle sine of ``amplitude`` [m/s^2] and ``freq`` [Hz]."""
+    return SinePulse(float(amplitude), float(freq))
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """One simulated amplitude [g]: collapsed, mode and collapse phase (see :mod:`dem.shake`)."""
+
+    amplitude_g: float
+    collapsed: bool
+    mode: str
+    phase: str | None
+
+    def to_dict(self) -> dict:
+        return {"amplitude_g": self.amplitude_g, "collapsed": self.collapsed, "mode": self.mode, "phase": self.phase}
+
+
+@dataclass(frozen=True)
+class ThresholdResult:
+    """Least collapsing amplitude at one frequency, with all scan bands.
+
+    ``amplitude_g`` is None when nothing up to ``a_max`` collapsed; ``bracket_g`` the final
+    (survival, collapse) bisection bracket; ``bands``: dicts ``from_g``, ``to_g``, ``outcome``
+    (``survival``/``collapse``), ``collapse``; ``runs``: every simulation in order.
+    """
+
+    freq: float
+    amplitude_g: float | None
+    bracket_g: tuple[float, float] | None
+    bands: tuple[dict, ...]
+    runs: tuple[Outcome, ...]
+    scan_ratio: float
+    tol: float
+    wall_s: float
+    mode: str = ""
+    phase: str | None = None
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def n_sims(self) -> int:
+        return len(self.runs)
+
+    @property
+    def survival_bands_above(self) -> list[dict]:
+        """Survival bands above the first threshold (temporary recovery)."""
+        if self.amplitude_g is None:
+            return []
+        return [b for b in self.bands if not b["collapse"] and b["from_g"] >= self.amplitude_g * (1 - 1e-9)]
+
+    def summary(self) -> dict:
+        return {"freq": self.freq, "amplitude_g": self.amplitude_g,
+                "bracket_g": list(self.bracket_g) if self.bracket_g else None, "mode": self.mode,
+                "collapse_phase": self.phase, "bands": list(self.bands),
+                "survival_bands_above": self.survival_bands_above, "n_sims": self.n_sims,
+                "scan_ratio": self.scan_ratio, "tol": self.tol, "wall_s": self.wall_s,
+                "runs": [r.to_dict() for r in self.runs], **self.extra}
+
+
+def _run_one(args) -> Outcome:
+    model, settings, protocol, motion_fn, a_g, freq = args
+    c, mode, phase = collapses(model, motion_fn(a_g * G, freq), settings, protocol)
+    return Outcome(float(a_g), bool(c), mode, phase)
+
+
+def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
+    """Geometric amplitudes [g] from ``a_min_g`` to ``a_max_g`` with step ratio at most ``ratio``."""
+    if not (0 < a_min_g < a_max_g and math.isfinite(a_max_g)):
+        raise ArchdemInputError(f"amplitude range must satisfy 0 < a_min < a_max, got {a_min_g:g}, {a_max_g:g} g")
+    if not (ratio > 1):
+        raise ArchdemInputError(f"scan ratio must be > 1, got {ratio:g}")
+    n = int(math.ceil(math.log(a_max_g / a_min_g) / math.log(ratio) - 1e-9)) + 1
+    return np.geomspace(a_min_g, a_max_g, max(n, 2))
+
+
+def _map(fn, jobs: list, workers: int) -> list:
+    if workers <= 1 or len(jobs) <= 1:
+        return [fn(j) for j in jobs]
+    with ProcessPoolExecutor(max_workers=min(workers, len(jobs))) as ex:
+        return list(ex.map(fn, jobs))
+
+
+def _bands(runs: Sequence[Outcome], first: float | None) -> tuple[dict, ...]:
+    rs = sorted(runs, key=lambda r: r.amplitude_g)
+    bands: list[dict] = []
+    for k, r in enumerate(rs):
+        if bands and bands[-1]["collapse"] == r.collapsed:
+            bands[-1]["to_g"] = r.amplitude_g
+            continue
+        if bands:
+            lo = rs[k - 1].amplitude_g
+            edge = first if (first is not None and r.collapsed and lo < first <= r.amplitude_g * (1 + 1e-12)
+                             and not any(b["collapse"] for b in bands)) else math.sqrt(lo * r.amplitude_g)
+            bands[-1]["to_g"] = edge
+            bands.append({"from_g": edge, "to_g": r.amplitude_g, "outcome": "collapse" if r.collapsed else "survival",
+                          "collapse": r.collapsed, "edge_bracket_g": [lo, r.amplitude_g]})
+        else:
+            bands.append({"from_g": r.amplitude_g, "to_g": r.amplitude_g,
+                          "outcome": "collapse" if r.collapsed else "survival", "collapse": r.collapsed,
+                          "edge_bracket_g": None})
+    return tuple(bands)
+
+
+def threshold(model: Model, freq: float, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
+              a_min_g: float = 0.05, a_max_g: float = 2.0, scan_ratio: float = 1.15, tol: float = 0.01,
+              workers: int | None = None, motion_fn: Callable[[float, float], GroundMotion] = sine_motion,
+              max_sims: int = 60) -> ThresholdResult:
+    """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``model`` (see module docstring).
+
+    ``a_min_g`` should be at or below the static onset ``lambda`` (nothing moves below it);
+    ``workers``: processes for the scan (default all cores, 1 = serial).
+    """
+    if not (math.isfinite(freq) and freq > 0):
+        raise ArchdemInputError(f"frequency must be a positive number of Hz, got {freq!r}")
+    if not (0 < tol < 0.5):
+        raise ArchdemInputError(f"bisection tolerance must be in (0, 0.5), got {tol!r}")
+    settings = settings or Settings()
+    protocol = protocol or ShakeProtocol()
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    wall0 = time.perf_counter()
+    grid = scan_grid(a_min_g, a_max_g, scan_ratio)
+    job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
+    runs = _map(_run_one, [job(a) for a in grid], workers)
+    scan = list(runs)
+    ks = [k for k, r in enumerate(scan) if r.collapsed]
+    if not ks:
+        return ThresholdResult(float(freq), None, None, _bands(runs, None), tuple(runs), scan_ratio, tol,
+                               time.perf_counter() - wall0)
+    k = ks[0]
+    hi_r = scan[k]
+    if k == 0:  # the lowest scanned amplitude collapses: step down until something survives
+        lo_r = None
+        a = hi_r.amplitude_g
+        for _ in range(6):
+            a /= scan_ratio
+            r = _run_one(job(a))
+            runs.append(r)
+            if not r.collapsed:
+                lo_r = r
+                break
+            hi_r = r
+        if lo_r is None:
+            raise ArchdemInputError(f"collapse at every amplitude down to {a:.4g} g; lower --a-min")
+    else:
+        lo_r = scan[k - 1]
+    lo, hi = lo_r.amplitude_g, hi_r.amplitude_g
+    while hi / lo - 1 > tol and len(runs) < max_sims:
+        mid = math.sqrt(lo * hi)
+        r = _run_one(job(mid))
+        runs.append(r)
+        if r.collapsed:
+            hi, hi_r = mid, r
+        else:
+            lo = mid
+    return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs), scan_ratio,
+                           tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase)
+
+
+def _threshold_job(args) -> ThresholdResult:
+    model, freq, settings, protocol, kw = args
+    return threshold(model, freq, settings, protocol, workers=1, **kw)
+
+
+def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | None = None,
+                   protocol: ShakeProtocol | None = None, workers: int | None = None, **kw) -> dict:
+    """DEM failure domain: :func:`threshold` at every frequency [Hz], in parallel over the grid
+    (``workers`` processes, default all cores). ``kw`` go to :func:`threshold` (amplitude range,
+    scan ratio, tol). Returns a dict shaped like the analytic domain JSON: ``points`` (``x`` [Hz],
+    ``amplitude_g``, ``mode``: the collapse phase mapped to the analytic names), ``bands``
+    (``x``, ``from_g``, ``to_g``, ``outcome``, ``collapse``) and ``thresholds`` (full summaries)."""
+    freqs = [float(f) for f in freqs]
+    if not freqs or not all(math.isfinite(f) and f > 0 for f in freqs):
+        raise ArchdemInputError("the frequency grid must contain positive numbers")
+    settings = settings or Settings()
+    protocol = protocol or ShakeProtocol()
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    wall0 = time.perf_counter()
+    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers)
+    names = {"before-first-rebound": "first-half-cycle", "after-first-rebound": "after-impact"}
+    points, bands = [], []
+    for r in res:
+        if r.amplitude_g is not None:
+            points.append({"x": r.freq, "amplitude_g": r.amplitude_g, "mode": names.get(r.phase or "", r.phase),
+                           "dem_mode": r.mode})
+        # further survival -> collapse edges (scan resolution)
+        for b0, b1 in zip(r.bands[:-1], r.bands[1:]):
+            if not b0["collapse"] and b1["collapse"] and r.amplitude_g is not None and b1["from_g"] > r.amplitude_g * 1.001:
+                points.append({"x": r.freq, "amplitude_g": b1["from_g"], "mode": "collapse", "dem_mode": ""})
+        bands += [{"x": r.freq, **{k: b[k] for k in ("from_g", "to_g", "outcome", "collapse")}} for b in r.bands]
+    return {"engine": "dem", "points": points, "bands": bands, "thresholds": [r.summary() for r in res],
+            "wall_s": time.perf_counter() - wall0}

@@ -1,0 +1,38 @@
+"""HDF5 result files: round trip, never overwrite, atomic."""
+import numpy as np
+import pytest
+
+from dem.model import single_block
+from dem.protocols import TiltProtocol, tilt
+from dem.results import load_result, save_result
+from dem.settings import Settings
+from specimens.errors import ArchdemInputError
+
+
+@pytest.fixture(scope="module")
+def result():
+    return tilt(single_block(0.1, 0.2), Settings(mu_joint=1.0, mu_base=1.0), TiltProtocol(tol=0.02))
+
+
+def test_round_trip(tmp_path, result):
+    p = save_result(result, tmp_path / "r.h5")
+    r = load_result(p)
+    assert r.lam == result.lam and r.bracket == result.bracket and r.mode == result.mode
+    assert r.settings == result.settings and r.protocol == result.protocol
+    assert r.summary()["joints"] == result.summary()["joints"]
+    assert r.levels == [tuple(x) for x in result.levels]
+    assert np.array_equal(r.collapse.history.pos, result.collapse.history.pos)
+    assert np.array_equal(r.stable.history.quat, result.stable.history.quat)
+    assert r.model.bodies[0].mass == result.model.bodies[0].mass
+    assert np.array_equal(r.model.bodies[0].pieces[0], result.model.bodies[0].pieces[0])
+    assert r.versions["pybullet"] == result.versions["pybullet"]
+    assert r.criterion == result.criterion
+
+
+def test_never_overwrites_and_atomic(tmp_path, result):
+    p = save_result(result, tmp_path / "r.h5")
+    before = p.read_bytes()
+    with pytest.raises(ArchdemInputError):
+        save_result(result, p)
+    assert p.read_bytes() == before
+    assert [q.name for q in tmp_path.iterdir()] == ["r.h5"]  # no temporary left behind
