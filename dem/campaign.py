@@ -152,7 +152,7 @@ def all_steps() -> dict[str, tuple[StepFunc, str]]:
     """Every campaign step in order (the simulator steps are registered on first use)."""
     from dem import campaign_dem as cd
 
-    STEPS["tilt"] = (cd.step_tilt, "virtual tilt test of every specimen (reference friction and no sliding)")
+    STEPS["tilt"] = (cd.step_tilt, "virtual tilt test of every specimen vs limit analysis")
     STEPS["map"] = (cd.step_map, "friction threshold map (rocking / sliding)")
     STEPS["shake"] = (cd.step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar")
     STEPS["record"] = (cd.step_record, "recorded accelerogram scaled until collapse")

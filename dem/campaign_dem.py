@@ -142,7 +142,7 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
     """Rocking/sliding friction threshold of every specimen (coarse grid when quick)."""
     from dem.friction_map import catalogue_map
 
-    mus = "0.3,0.6,0.9" if ctx.quick else "0.3:1.5:0.1"
+    mus = "0.3,0.6,0.9,1.2" if ctx.quick else "0.3:1.5:0.1"
     specs = ([s for s in ctx.specimens if s.id in QUICK_MAP] or ctx.specimens[:2]) if ctx.quick else ctx.specimens
     res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, _studies(ctx) / "map.h5",
                         workers=ctx.workers, resume=(_studies(ctx) / "map.h5").exists(), progress=True,
@@ -156,8 +156,8 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
     br = [r for r in rows if r["mu_star_dem"] is not None and r["mu_star_dem"] == r["mu_star_dem"]]
     if br:
         diffs = [(r["id"], r["mu_star_dem"] - r["mu_star_two_bar"]) for r in br if r["mu_star_two_bar"] is not None]
-        findings.append(f"The DEM rocking/sliding threshold mu* is bracketed for {len(br)} of {len(rows)} specimens, "
-                        f"from {min(r['mu_star_dem'] for r in br):.2f} to {max(r['mu_star_dem'] for r in br):.2f}.")
+        values = ", ".join(f"{r['id']} {r['mu_star_dem']:.2f}" for r in br)
+        findings.append(f"The DEM rocking/sliding threshold mu* is bracketed for {len(br)} of {len(rows)} specimens: {values}.")
         if diffs:
             above = sum(1 for _, x in diffs if x > 0)
             findings.append(f"The two-bar model's mu* is below the DEM mu* for {above} of {len(diffs)} bracketed specimens "
@@ -168,9 +168,11 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
             inc = all(b["mu_star_dem"] >= a["mu_star_dem"] for a, b in zip(rs, rs[1:]))
             values = ", ".join(f"{r['mu_star_dem']:.2f}" for r in rs)
             findings.append(f"Sh = {sh:g}: DEM mu* {'grows' if inc else 'does not grow monotonically'} with Sd ({values}).")
-    all_rock = [r["id"] for r in rows if r["dem_status"] == "all_rocking"]
-    if all_rock:
-        findings.append(f"Rocking already at the lowest friction of the grid: {', '.join(all_rock)}.")
+    for status, text in (("all_rocking", "Rocking already at the lowest friction of the grid"),
+                         ("all_sliding", "Still sliding at the highest friction of the grid")):
+        ids = [r["id"] for r in rows if r["dem_status"] == status]
+        if ids:
+            findings.append(f"{text}: {', '.join(ids)}.")
     return {
         "summary": f"Tilt test of {len(specs)} specimens swept over block-block friction ({mus}; base {REFERENCE_MU_BASE}), mu* refined by "
                    f"bisection ({res.rounds} round(s)); analytic LP and two-bar thresholds beside it. "
