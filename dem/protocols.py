@@ -319,9 +319,9 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
         lam = proto.rate * r.t_collapse
         levels.append((lam, True))
         collapse, bracket = r, (proto.rate * (r.t_collapse - settings.record_every), lam)
-    from dem.provenance import provenance
+    from dem.provenance import run_provenance
 
     return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
                       n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
                       collapse.joints if collapse else [], levels, collapse, stable,
-                      detect.criterion(settings, model), provenance())
+                      detect.criterion(settings, model), run_provenance(settings.engine))

@@ -19,3 +19,14 @@ def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
     for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco") + tuple(extra):
         out[name] = package_version(name)
     return out
+
+
+def run_provenance(engine: str) -> dict:
+    """:func:`provenance` plus the engine's own description (name, version, engine options)."""
+    from dem.engines import get_engine
+
+    eng = get_engine(engine)
+    try:
+        return {**provenance(), **eng.versions()}
+    finally:
+        eng.close()

@@ -167,7 +167,7 @@ def shake(model: Model, motion: GroundMotion, settings: Settings | None = None,
           protocol: ShakeProtocol | None = None, label: str | None = None) -> ShakeResult:
     """Run ``motion`` (ground acceleration [m/s^2], +x) on ``model``; see the module docstring."""
     from dem import detect
-    from dem.provenance import provenance
+    from dem.provenance import run_provenance
 
     settings = settings or Settings()
     proto = protocol or ShakeProtocol()
@@ -184,7 +184,7 @@ def shake(model: Model, motion: GroundMotion, settings: Settings | None = None,
     crit.update({"first_rebound": "first sign change of the crown horizontal velocity after |u| > onset_mm",
                  "onset_mm": proto.onset_mm})
     return ShakeResult(label or model.name, model, st, proto, motion, sim, u, t_start, t_reb, phase, crit,
-                       provenance())
+                       run_provenance(st.engine))
 
 
 def collapses(model: Model, motion: GroundMotion, settings: Settings, protocol: ShakeProtocol) -> tuple[bool, str, str | None]:
