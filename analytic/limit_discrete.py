@@ -457,3 +457,31 @@ def macro_block_of_bodies(assembly: Assembly, lo: int, hi: int) -> MacroBlock:
 def warn_if_unstable(lam: float, what: str) -> None:
     if not (lam >= 0):
         warnings.warn(f"{what}: the arch cannot stand under self-weight (lambda = {lam:.4g})", stacklevel=2)
+
+
+def mechanism_lambda(assembly: Assembly, hinges) -> float:
+    """Lambda of one given four-hinge mechanism ``((joint name, face), ...)`` left to right, by the
+    virtual-work kernel of :func:`four_hinge_lambda`; ``inf`` if the layout is not admissible,
+    ``nan`` if it does not have four hinges. Used to compare a simulated hinge set with the
+    minimum of the enumeration."""
+    if len(hinges) != 4:
+        return float("nan")
+    names = [j.name for j in assembly.joints]
+    J = np.array([names.index(h) for h, _ in hinges])
+    F = np.array([FACES.index(f) for _, f in hinges])
+    L = assembly.arch.Rp
+    corners = np.array([[j.p_i, j.p_e] for j in assembly.joints]) / L
+    normals = np.array([j.normal for j in assembly.joints])
+    m = np.array([b.mass for b in assembly.bodies])
+    c = np.array([b.centroid for b in assembly.bodies]) / L
+    m = m / m.sum()
+    P = np.concatenate([[[0.0, 0.0, 0.0]], np.cumsum(np.column_stack([m, m * c[:, 0], m * c[:, 1]]), axis=0)])
+    a = np.array([j.a for j in assembly.joints])
+    b = np.array([j.b for j in assembly.joints])
+    lo, hi = b[J[:3]], a[J[1:]]
+    if np.any(lo < 0) or np.any(hi < lo):
+        return float("inf")
+    s = P[hi + 1] - P[lo]
+    w = four_hinge_lambda(corners[J, F][None], corners[J, 1 - F][None], normals[J][None],
+                          s[None, :, 0], s[None, :, 1], s[None, :, 2])
+    return float(w.lam[0]) if bool(w.admissible[0]) else float("inf")

@@ -41,36 +41,10 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     k = enumerate_mechanisms(assembly)
     if tuple(dem_hinges) == tuple(k.hinges):
         return True, float(k.lam)
+    from analytic.limit_discrete import mechanism_lambda
+
     lam = mechanism_lambda(assembly, dem_hinges)
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
-
-
-def mechanism_lambda(assembly, hinges) -> float:
-    """Lambda of the four-hinge mechanism ``hinges`` ((joint, face) left to right), by the
-    virtual-work kernel of the limit analysis (inf if not admissible)."""
-    from analytic.limit_discrete import FACES, four_hinge_lambda
-
-    if len(hinges) != 4:
-        return float("nan")
-    names = [j.name for j in assembly.joints]
-    J = np.array([names.index(h) for h, _ in hinges])
-    F = np.array([FACES.index(f) for _, f in hinges])
-    L = assembly.arch.Rp
-    corners = np.array([[j.p_i, j.p_e] for j in assembly.joints]) / L
-    normals = np.array([j.normal for j in assembly.joints])
-    m = np.array([b.mass for b in assembly.bodies])
-    c = np.array([b.centroid for b in assembly.bodies]) / L
-    m = m / m.sum()
-    P = np.concatenate([[[0.0, 0.0, 0.0]], np.cumsum(np.column_stack([m, m * c[:, 0], m * c[:, 1]]), axis=0)])
-    a = np.array([j.a for j in assembly.joints])
-    b = np.array([j.b for j in assembly.joints])
-    lo, hi = b[J[:3]], a[J[1:]]
-    if np.any(lo < 0) or np.any(hi < lo):
-        return float("inf")
-    sums = P[hi + 1] - P[lo]
-    w = four_hinge_lambda(corners[J, F][None], corners[J, 1 - F][None], normals[J][None],
-                          sums[None, :, 0], sums[None, :, 1], sums[None, :, 2])
-    return float(w.lam[0]) if bool(w.admissible[0]) else float("inf")
 
 
 def one(job: tuple[str, str]) -> dict:

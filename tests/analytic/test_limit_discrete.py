@@ -149,3 +149,19 @@ def test_bad_input():
         enumerate_mechanisms(asm, contact_fraction=0.0)
     with pytest.raises(ArchdemInputError):
         enumerate_mechanisms(asm, load_sign=0)
+
+
+@pytest.mark.parametrize("config", ["glued", "free"])
+def test_mechanism_lambda_reproduces_the_enumeration_minimum(config):
+    from analytic.limit_discrete import enumerate_mechanisms, mechanism_lambda
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    asm = discretise(get_specimen("Sh06-Sd020").arch, config=config)
+    k = enumerate_mechanisms(asm)
+    # the same virtual-work kernel on the same layout: identical up to round-off
+    assert mechanism_lambda(asm, k.hinges) == pytest.approx(k.lam, rel=1e-12)
+    # the face-swapped layout is not a collapse mechanism for loads along +x
+    swapped = tuple((j, "extrados" if f == "intrados" else "intrados") for j, f in k.hinges)
+    assert mechanism_lambda(asm, swapped) > k.lam
+    assert np.isnan(mechanism_lambda(asm, k.hinges[:3]))
