@@ -226,6 +226,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
                 "survival_bands_above": " ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f}" for b in t.get("survival_bands_above", [])),
                 "n_sims": t.get("n_sims", 0),
             })
+        figures += _threshold_histories(s, dem, ctx, d)
         png = d / f"domain_{s.id}.png"
         plot_domain_over_analytic(dem, ana, png, title=f"{s.id}: DEM vs rocking linkages, one-cycle sine")
         figures.append({"path": f"shake/{png.name}", "caption": f"{s.id}: DEM shake thresholds over the analytic domains"})
@@ -246,6 +247,29 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
         "tables": [{"name": "shake", "title": "Shake-table thresholds [g]", "csv": "shake/shake.csv"}],
         "figures": figures, "findings": findings,
     }
+
+
+def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list[dict]:
+    """Time histories just below and at the first DEM threshold (lowest frequency that has one)."""
+    from analytic.inputs import G, SinePulse
+    from dem.figures_shake import save_shake_figure
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from dem.shake import shake
+    from specimens.blocks import discretise
+
+    t = next((t for t in dem["thresholds"] if t["amplitude_g"] is not None), None)
+    if t is None:
+        return []
+    model = from_assembly(discretise(spec.arch, config=ctx.config), name=spec.id)
+    out = []
+    for what, a_g in (("survival", t["bracket_g"][0]), ("collapse", t["bracket_g"][1])):
+        res = shake(model, SinePulse(a_g * G, t["freq"]), Settings(engine=ctx.engine), label=spec.id)
+        png = save_shake_figure(res, d / f"history_{spec.id}_{t['freq']:g}Hz_{what}.png")
+        out.append({"path": f"shake/{png.name}",
+                    "caption": f"{spec.id}, {t['freq']:g} Hz sine at {a_g:.3f} g ({what} side of the threshold): "
+                               "crown displacement and input"})
+    return out
 
 
 # ---------------------------------------------------------------------------- recorded motion
