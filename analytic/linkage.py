@@ -63,8 +63,24 @@ def ring_moments(arch: PointedArch, density: float, u0: float, u1: float) -> tup
 # ---------------------------------------------------------------------------------------------
 # four-bar
 # ---------------------------------------------------------------------------------------------
+class _RingLinkage(Mechanism):
+    """What the four-bar and the two-bar share: rigid bodies that are regions of an arch ring
+    (``regions`` = cut-coordinate pairs, with ``arch`` and ``density``) or plain rigid bodies
+    (``masses``, ``centroids``, ``inertias``) for the impact fields."""
+
+    def rest_fields(self) -> tuple[RigidField, ...]:
+        return tuple(RigidField(r, *field_of(s)) for r, s in zip(self.regions, self.body_states(0.0)))
+
+    def region_moments(self, region) -> tuple[float, float, float, float]:
+        if isinstance(region, tuple) and self.arch is not None:
+            return ring_moments(self.arch, self.density, float(region[0]), float(region[1]))
+        k = self.regions.index(region)
+        m, c = self.masses[k], self.centroids[k]
+        return m, m * c[0], m * c[1], self.inertias[k] + m * (c[0] ** 2 + c[1] ** 2)
+
+
 @dataclass(frozen=True, eq=False)
-class FourBar(Mechanism):
+class FourBar(_RingLinkage):
     """Four-bar linkage with three rigid macro-blocks attached to its links.
 
     ``points``: H1..H4 [m]; ``others``: the other end point of each hinge's cut and ``normals``
@@ -175,16 +191,6 @@ class FourBar(Mechanism):
             ok &= op >= -1e-9 * ref
         dV = self.dpotential(0.0)
         return bool(ok and dV > 0)
-
-    def rest_fields(self) -> tuple[RigidField, ...]:
-        return tuple(RigidField(r, *field_of(s)) for r, s in zip(self.regions, self.body_states(0.0)))
-
-    def region_moments(self, region) -> tuple[float, float, float, float]:
-        if isinstance(region, tuple) and self.arch is not None:
-            return ring_moments(self.arch, self.density, float(region[0]), float(region[1]))
-        k = self.regions.index(region)
-        m, c = self.masses[k], self.centroids[k]
-        return m, m * c[0], m * c[1], self.inertias[k] + m * (c[0] ** 2 + c[1] ** 2)
 
     def impact_candidates(self) -> list["FourBar"]:
         """Face-swapped layout first; on a ring also the mirrored layout (always admissible by
@@ -468,7 +474,7 @@ def minimised_four_bar(arch: PointedArch, density: float = 500.0, direction: int
 # two-bar
 # ---------------------------------------------------------------------------------------------
 @dataclass(frozen=True, eq=False)
-class TwoBar(Mechanism):
+class TwoBar(_RingLinkage):
     """Two bars hinged at ``A`` (left bar) and ``B`` (right bar), joined at ``S`` by a vertical slider.
 
     ``masses``/``centroids``/``inertias``: left bar then right bar; ``sense``: +1 if the left bar
@@ -524,16 +530,6 @@ class TwoBar(Mechanism):
     def geometric_limit(self) -> float:
         """0.95 x the rotation at which S on the right bar turns horizontal about B, or pi/2."""
         return 0.95 * _first_root(self._margin, math.pi / 2)
-
-    def rest_fields(self) -> tuple[RigidField, ...]:
-        return tuple(RigidField(r, *field_of(s)) for r, s in zip(self.regions, self.body_states(0.0)))
-
-    def region_moments(self, region) -> tuple[float, float, float, float]:
-        if isinstance(region, tuple) and self.arch is not None:
-            return ring_moments(self.arch, self.density, float(region[0]), float(region[1]))
-        k = self.regions.index(region)
-        m, c = self.masses[k], self.centroids[k]
-        return m, m * c[0], m * c[1], self.inertias[k] + m * (c[0] ** 2 + c[1] ** 2)
 
     def mirrored(self) -> "TwoBar":
         mx = lambda p: (-p[0], p[1])  # noqa: E731
