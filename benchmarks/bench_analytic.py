@@ -6,14 +6,12 @@ numbered file if it exists).
 """
 from __future__ import annotations
 
-import json
 import platform
 import time
-from pathlib import Path
 
 from analytic.limit_continuous import continuous_collapse
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from dem.atomic import atomic_path, unique_run_path
+from _common import report
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, REFERENCE_MU_BASE, REFERENCE_MU_JOINT, full_scale_set
 
@@ -44,12 +42,7 @@ def main() -> dict:
         "full_scale_continuous_s": t_fs, "n_full_scale": len(fs), "target_full_scale_s": 30.0,
         "python": platform.python_version(), "machine": platform.machine(),
     }
-    for k, v in res.items():
-        print(f"{k:32s} {v:.3f}" if isinstance(v, float) else f"{k:32s} {v}")
-    out = unique_run_path(Path(__file__).parent / "results", "analytic", ".json")
-    with atomic_path(out) as tmp:
-        tmp.write_text(json.dumps(res, indent=2))
-    print(f"written {out.name}")
+    report("analytic", res, digits=3)
     return res
 
 

@@ -6,19 +6,17 @@ numbered file if it exists).
 """
 from __future__ import annotations
 
-import json
 import os
 import platform
 import statistics
 import time
-from pathlib import Path
 
 import numpy as np
 
 from analytic.domain import failure_domain, make_input
 from analytic.dynamics import simulate
 from analytic.linkage import minimised_four_bar
-from dem.atomic import atomic_path, unique_run_path
+from _common import report
 from specimens.catalogue import get_specimen
 
 
@@ -50,12 +48,7 @@ def main() -> dict:
         "domain_bands": sum(len(c.bands) for c in dom.columns), "target_domain_s": 20.0,
         "python": platform.python_version(), "machine": platform.machine(),
     }
-    for k, v in res.items():
-        print(f"{k:32s} {v:.4f}" if isinstance(v, float) else f"{k:32s} {v}")
-    out = unique_run_path(Path(__file__).parent / "results", "dynamics", ".json")
-    with atomic_path(out) as tmp:
-        tmp.write_text(json.dumps(res, indent=2))
-    print(f"written {out.name}")
+    report("dynamics", res, digits=4)
     return res
 
 
