@@ -12,8 +12,10 @@ Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horiz
   until the bracket is narrower than ``tol`` relative. The answer is the upper end of the
   bracket (first collapsing level); non-monotonic outcomes near the threshold (spec 04) make
   thresholds reproducible to about +-1 %.
-* ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time.
-* ``ramp``: one simulation at a constant rate; lambda read at collapse detection.
+* ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time;
+  the answer is the step during which the collapsing motion started (:func:`onset_time`).
+* ``ramp``: one simulation at a constant rate; lambda read at the onset of the collapsing
+  motion (:func:`onset_time`), which lags the threshold by a rate-dependent amount.
 """
 from __future__ import annotations
 
@@ -179,6 +181,15 @@ def read_mode(model: Model, settings: Settings, hist: History) -> tuple[list[det
 
 
 # ------------------------------------------------------------------------------------- tilt
+def onset_time(model: Model, settings: Settings, sim: SimResult) -> float:
+    """Time [s] at which the motion that ended in the collapse of ``sim`` started: the first
+    record of the last excursion of the largest displacement above ``mode_window[0] x size``
+    (the lower end of the mode window, above pre-collapse creep; spec 04 §4.1)."""
+    below = np.flatnonzero(sim.history.dmax < settings.mode_window[0] * model.size)
+    k = min(int(below[-1]) + 1, len(sim.history.t) - 1) if len(below) else 0
+    return float(sim.history.t[k])
+
+
 @dataclass(frozen=True)
 class TiltProtocol:
     """Tilt-test protocol parameters (stored with each result)."""
@@ -305,20 +316,25 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
         n = 1
         if not r.collapsed:
             raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
-        k = math.floor(r.t_collapse / period - 1e-9)
-        hi = load.level(r.t_collapse)
-        lo = proto.step * k
-        hi_step = proto.step * (k + 1)
-        levels.append((hi, True))
-        collapse, lam, bracket = r, hi_step, (lo, hi_step)
+        # the answer is the step during which the collapsing motion started (every lower step
+        # was held without it), not the one at which the collapse criterion fired: slow
+        # collapses just above the threshold take longer than one hold to travel that far
+        k = math.floor(onset_time(model, settings, r) / period + 1e-9)
+        lam = proto.step * (k + 1)
+        levels.append((lam, True))
+        collapse, bracket = r, (proto.step * k, lam)
     else:
         r = simulate(model, settings, TiltRamp(proto.rate, g=settings.g), proto.lam_max / proto.rate)
         n = 1
         if not r.collapsed:
             raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
-        lam = proto.rate * r.t_collapse
+        # lambda at the onset of the collapsing motion; it still lags the threshold by the time
+        # the mechanism needs to move onset_displacement (for a block sliding on a ramp of rate r:
+        # about r^(2/3) (6 d / g)^(1/3), i.e. 1 % of mu = 0.3 at r = 0.005/s)
+        t_on = onset_time(model, settings, r)
+        lam = proto.rate * t_on
         levels.append((lam, True))
-        collapse, bracket = r, (proto.rate * (r.t_collapse - settings.record_every), lam)
+        collapse, bracket = r, (proto.rate * max(t_on - settings.record_every, 0.0), lam)
     from dem.provenance import run_provenance
 
     return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
