@@ -24,6 +24,76 @@ QUICK_MAP = ("Sh02-Sd015", "Sh1-Sd025")  # quick map: the thin/round-ish and the
 RECORD_FILE = "RSN6_IMPVALL.I_I-ELC180.AT2"  # El Centro 1940, the shared record set
 
 
+# ------------------------------------------------------------------------ what each step runs
+def _tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
+    frictions = {"reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
+    if not ctx.quick:  # the no-sliding validation doubles the cost: full campaign only
+        frictions["no_sliding"] = (NO_SLIDING, NO_SLIDING)
+    return frictions
+
+
+def _map_plan(ctx: CampaignContext) -> tuple[list, str, int]:
+    """Specimens, friction grid and bisection rounds of the map step."""
+    if ctx.quick:
+        return [s for s in ctx.specimens if s.id in QUICK_MAP] or ctx.specimens[:2], "0.3,0.6,0.9,1.2", 1
+    return ctx.specimens, "0.3:1.5:0.1", 3
+
+
+def _shake_plan(ctx: CampaignContext) -> tuple[list, tuple[float, ...]]:
+    """Specimens and pulse frequencies [Hz] of the shake step."""
+    if ctx.quick:
+        ids, freqs = QUICK_SHAKE
+        return [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1], freqs
+    return [s for s in ctx.specimens if round(s.arch.Sd, 3) in (0.15, 0.2)], SHAKE_FREQS
+
+
+def _record_plan(ctx: CampaignContext) -> list:
+    ids = ["Sh02-Sd020"] if ctx.quick else ["Sh02-Sd020", "Sh06-Sd015", "Sh1-Sd020"]
+    return [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1]
+
+
+# Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies, measured on the
+# 2-core reference machine (quick campaign of the README, per-step wall x 2 cores / units; full
+# tolerances from benchmarks/bench_dem.py, bench_map.py and bench_shake.py). MuJoCo costs
+# about 0.7 of these (README, "Choosing an engine").
+UNIT_CORE_S = {
+    ("tilt", True): 24.0,  # one tilt test, bisected to 2 %
+    ("tilt", False): 30.0,  # ... to 0.5 %
+    ("map", True): 24.0,  # one map case (tilt to 2 %)
+    ("map", False): 24.0,
+    ("shake", True): 40.0,  # one threshold (scan + bisection) at one frequency, tol 2 %
+    ("shake", False): 60.0,  # ... higher ceiling (6 x lambda) and tol 1 %
+    ("record", True): 60.0,  # one scaled-record threshold, 3 s window
+    ("record", False): 150.0,  # ... 7 s window, tol 1 %
+}
+ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
+
+
+def estimate(ctx: CampaignContext, steps: list[str]) -> dict[str, dict]:
+    """Per simulator step in ``steps``: number of units (tilt tests, map cases, thresholds) and
+    estimated wall time [s] on ``ctx.workers`` cores (all cores by default)."""
+    import os
+
+    from dem.friction_map import parse_mu_grid
+
+    cores = max(1, ctx.workers or os.cpu_count() or 1)
+    map_specs, mus, refine = _map_plan(ctx)
+    shake_specs, freqs = _shake_plan(ctx)
+    units = {
+        "tilt": (len(ctx.specimens) * len(_tilt_frictions(ctx)), "tilt tests"),
+        "map": (len(map_specs) * (len(parse_mu_grid(mus)) + refine), "map tilt cases"),
+        "shake": (len(shake_specs) * len(freqs), "sine-pulse thresholds"),
+        "record": (len(_record_plan(ctx)), "record thresholds"),
+    }
+    out = {}
+    for name in (s for s in steps if s in units):
+        n, what = units[name]
+        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(ctx.engine, 1.0)
+        # units run in parallel on the cores, but a step never takes less than one unit
+        out[name] = {"units": n, "what": what, "wall_s": max(n * unit / cores, unit if n else 0.0)}
+    return out
+
+
 def _studies(ctx: CampaignContext) -> Path:
     p = ctx.out / "studies"
     p.mkdir(exist_ok=True)
@@ -47,9 +117,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     from dem.sweep import case_key, run_study
     from specimens.blocks import discretise
 
-    frictions = {"reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
-    if not ctx.quick:  # the no-sliding validation doubles the cost: full campaign only
-        frictions["no_sliding"] = (NO_SLIDING, NO_SLIDING)
+    frictions = _tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
     # quick: bisection to 2 % in lambda (the map's tolerance); full: 0.5 % (the tilt test's)
     proto = None if ctx.quick else {"kind": "hold", "tol": 0.005}
@@ -107,6 +175,9 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     fig.savefig(d / "tilt_lambda_vs_Sd.png", dpi=120)
     plt.close(fig)
 
+    figures = [{"path": "tilt/tilt_lambda_vs_Sd.png", "caption": "Tilt lambda vs Sd: DEM (markers) and LP (lines)"}]
+    figures += _collapse_figures(rows, {s.id: by_key.get(case_key(cases[(s.id, "reference")])) for s in ctx.specimens},
+                                 {s.id: cases[(s.id, "reference")] for s in ctx.specimens}, d)
     sliding = [r["id"] for r in rows if r["mode_reference"] in ("sliding", "mixed")]
     err_ref = np.array([r["err_reference_vs_lp_pct"] for r in rows])
     findings = [
@@ -132,9 +203,34 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
                    + ", next to the discrete static LP of the same linearised blocks"
                    + (" (quick: lambda bisected to 2 %)." if ctx.quick else " (lambda bisected to 0.5 %)."),
         "tables": [{"name": "tilt", "title": "Virtual tilt test vs limit analysis", "csv": "tilt/tilt.csv"}],
-        "figures": [{"path": "tilt/tilt_lambda_vs_Sd.png", "caption": "Tilt lambda vs Sd: DEM (markers) and LP (lines)"}],
+        "figures": figures,
         "findings": findings,
     }
+
+
+def _collapse_figures(rows: list[dict], records: dict, cases: dict, d: Path) -> list[dict]:
+    """The arch at collapse (joints coloured by state) and the lambda bracket history of the first
+    specimen that rocks and the first that slides at the reference friction; the collapsing
+    simulation is replayed from the study (:func:`dem.friction_map.replay_tilt`)."""
+    from dem.figures import save_tilt_figure
+    from dem.friction_map import replay_tilt
+
+    picks = []
+    for modes in (("rocking",), ("sliding", "mixed")):
+        row = next((r for r in rows if r["mode_reference"] in modes), None)
+        if row is not None:
+            picks.append(row["id"])
+    out = []
+    for sid in picks:
+        rec = records[sid]
+        res = replay_tilt(cases[sid], rec.results)
+        png = save_tilt_figure(res, d / f"collapse_{sid}.png")
+        same = "" if res.mode == str(rec.results["mode"]) else f" (the replay reads {res.mode})"
+        out.append({"path": f"tilt/{png.name}",
+                    "caption": f"{sid} at the reference friction: the arch at collapse, displacements magnified, "
+                               f"joints coloured by state ({rec.results['mode']}{same}); right: the levels "
+                               "simulated by hold-and-bisect and the final bracket"})
+    return out
 
 
 # ------------------------------------------------------------------------------ friction map
@@ -142,11 +238,10 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
     """Rocking/sliding friction threshold of every specimen (coarse grid when quick)."""
     from dem.friction_map import catalogue_map
 
-    mus = "0.3,0.6,0.9,1.2" if ctx.quick else "0.3:1.5:0.1"
-    specs = ([s for s in ctx.specimens if s.id in QUICK_MAP] or ctx.specimens[:2]) if ctx.quick else ctx.specimens
+    specs, mus, refine = _map_plan(ctx)
     res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, _studies(ctx) / "map.h5",
                         workers=ctx.workers, resume=(_studies(ctx) / "map.h5").exists(), progress=True,
-                        refine=1 if ctx.quick else 3,
+                        refine=refine,
                         settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None)
     _write_csv(d / "map.csv", res.to_rows("summary"))
     _write_csv(d / "map_points.csv", res.to_rows("points"))
@@ -199,12 +294,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     from dem.settings import Settings
     from dem.shake_domain import analytic_domains, dem_failure_domain
 
-    if ctx.quick:
-        ids, freqs = QUICK_SHAKE
-        specs = [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1]
-    else:
-        specs = [s for s in ctx.specimens if round(s.arch.Sd, 3) in (0.15, 0.2)]
-        freqs = SHAKE_FREQS
+    specs, freqs = _shake_plan(ctx)
     rows, figures = [], []
     for s in specs:
         dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers,
@@ -320,8 +410,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     t_pga = float(np.argmax(np.abs(full.values)) * full.dt)
     # strong-motion window around the peak: short enough to scan many amplitudes
     t0, t1 = max(0.0, t_pga - 1.0), t_pga + (2.0 if ctx.quick else 6.0)
-    ids = ["Sh02-Sd020"] if ctx.quick else ["Sh02-Sd020", "Sh06-Sd015", "Sh1-Sd020"]
-    specs = [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1]
+    specs = _record_plan(ctx)
     rows = []
     for s in specs:
         lam = static_onset(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)

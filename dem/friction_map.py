@@ -221,6 +221,32 @@ def tilt_case(case: dict) -> dict:
     }
 
 
+def replay_tilt(case: dict, results: dict):
+    """The :class:`dem.protocols.TiltResult` of a finished hold-protocol DEM ``case`` whose
+    stored ``results`` are given, with the time history of its collapse: the collapsing level
+    (upper end of the bracket) is simulated again. The engines are deterministic for identical
+    command sequences, so this is the simulation the case ran (one simulation, not a tilt test)."""
+    from dem import detect
+    from dem.model import from_assembly
+    from dem.protocols import TiltResult, hold_level
+    from dem.provenance import run_provenance
+    from specimens.blocks import discretise
+
+    proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
+    if proto.kind != "hold":
+        raise ArchdemInputError(f"only hold-protocol tilt cases can be replayed, not {proto.kind!r}")
+    settings = _scaled_settings(case)
+    arch = arch_from_params(case["arch"])
+    model = from_assembly(discretise(arch, n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"]),
+                          name=case["label"])
+    lo, hi = (float(x) for x in results["bracket"])
+    sim = hold_level(model, settings, proto, hi)
+    levels = [(float(a), bool(b)) for a, b in np.asarray(results["levels"]).reshape(-1, 2)]
+    return TiltResult(case["label"], model, settings, proto, float(results["lambda"]), (lo, hi),
+                      int(results["n_sims"]), float(results["wall_s"]), sim.mode, sim.joints, levels, sim, None,
+                      detect.criterion(settings, model), run_provenance(settings.engine))
+
+
 def synthetic_case(case: dict) -> dict:
     """Case function (closed form, no DEM): rocking at ``lam_rock`` above ``mu_star``, sliding
     with ``lambda = lam_rock * mu / mu_star`` below, from ``case["synthetic"]`` =

@@ -256,7 +256,9 @@ class TiltResult:
         }
 
 
-def _hold(model, settings, proto, lam) -> SimResult:
+def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float) -> SimResult:
+    """One simulation of the hold protocol: smooth ramp to ``lam`` over ``proto.ramp_time``,
+    then held ``proto.hold_time`` [s]."""
     return simulate(model, settings, TiltHold(lam, proto.ramp_time, g=settings.g), proto.ramp_time + proto.hold_time)
 
 
@@ -275,7 +277,7 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
             raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
         est = proto.scan_rate * scan.t_collapse
         hi, lo = est, 0.85 * est
-        r = _hold(model, settings, proto, hi)
+        r = hold_level(model, settings, proto, hi)
         n += 1
         levels.append((hi, r.collapsed))
         while not r.collapsed:
@@ -283,13 +285,13 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
             hi *= 1.1
             if hi > proto.lam_max or n >= proto.max_sims:
                 raise ArchdemInputError(f"no collapse up to lambda = {hi:g} under held levels")
-            r = _hold(model, settings, proto, hi)
+            r = hold_level(model, settings, proto, hi)
             n += 1
             levels.append((hi, r.collapsed))
         collapse = r
         if stable is None:
             while True:
-                r = _hold(model, settings, proto, lo)
+                r = hold_level(model, settings, proto, lo)
                 n += 1
                 levels.append((lo, r.collapsed))
                 if not r.collapsed:
@@ -301,7 +303,7 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
                     break
         while (hi - lo) > proto.tol * hi and n < proto.max_sims:
             mid = 0.5 * (lo + hi)
-            r = _hold(model, settings, proto, mid)
+            r = hold_level(model, settings, proto, mid)
             n += 1
             levels.append((mid, r.collapsed))
             if r.collapsed:

@@ -26,12 +26,28 @@ def _campaign(args: argparse.Namespace) -> int:
             from specimens.errors import ArchdemInputError
 
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(STEPS)}")
+    from dem.campaign_dem import estimate
+
+    est = estimate(ctx, steps or list(all_steps()))
+    if est:
+        total = sum(e["wall_s"] for e in est.values())
+        parts = "; ".join(f"{k}: {e['units']} {e['what']}" for k, e in est.items())
+        print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine}: {parts}; estimated "
+              f"{_duration(total)} of simulation (steps already finished in {out} are kept)", flush=True)
     manifest = run_campaign(ctx, steps)
     print(f"campaign finished in {time.perf_counter() - t0:.1f} s; results in {out}")
     report = manifest.get("report")
     if report:
         print(f"report: {report}")
     return 0
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.0f} min"
+    return f"{seconds / 3600:.1f} h"
 
 
 def register(sub) -> None:

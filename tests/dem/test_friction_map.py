@@ -247,3 +247,17 @@ def test_real_dem_map_two_frictions(tmp_path):
     # low friction: the LP's mechanism slides (mu*_LP ~ 0.36) and so does the DEM, at a lower lambda
     assert lo.mode in fm.SLIDING_MODES and lo.lam < hi.lam
     assert s.threshold.status == "bracketed" and s.mu_star_dem == pytest.approx(0.75)
+
+
+def test_replay_tilt_reproduces_the_collapse():
+    # the report's collapse figure re-runs the collapsing level of a stored case: the engine is
+    # deterministic for identical command sequences, so mode and joint states must be the case's
+    sp = get_specimen("Sh06-Sd015")
+    case = fm.make_case(sp.id, sp.arch, "glued", 1.2, 1.0, protocol={"kind": "hold", "tol": 0.05})
+    res = fm.tilt_case(case)
+    rep = fm.replay_tilt(case, res)
+    assert rep.collapse is not None and rep.collapse.collapsed
+    assert rep.mode == res["mode"]
+    assert [j.state for j in rep.joints] == list(res["joint_states"])
+    assert (rep.lam, rep.bracket) == (res["lambda"], tuple(res["bracket"]))
+    assert [lv for lv, _ in rep.levels] == pytest.approx(np.asarray(res["levels"])[:, 0])
