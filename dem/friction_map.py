@@ -189,6 +189,23 @@ def _scaled_settings(case: dict):
     return Settings(mu_joint=case["mu_joint"], mu_base=case["mu_base"], **kw)
 
 
+def _case_setup(case: dict):
+    """Model, settings and protocol of a DEM tilt case. A hold protocol that names no ``guess``
+    starts its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`)."""
+    from dataclasses import replace
+
+    from dem.model import from_assembly
+    from dem.protocols import lp_guess
+    from specimens.blocks import discretise
+
+    asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
+    settings = _scaled_settings(case)
+    proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
+    if proto.kind == "hold" and "guess" not in case["protocol"]:
+        proto = replace(proto, guess=lp_guess(asm, settings))
+    return from_assembly(asm, name=case["label"]), settings, proto
+
+
 # ----------------------------------------------------------------------------- case functions
 def tilt_case(case: dict) -> dict:
     """Case function (DEM): one tilt test of ``case`` (see :func:`make_case`).
@@ -197,15 +214,10 @@ def tilt_case(case: dict) -> dict:
     ``friction_work_J``, ``levels`` (n, 2: lambda, collapsed) and the joint states at collapse
     (``joint_names``, ``joint_states``, ``joint_faces``, ``joint_opening`` [m], ``joint_slip`` [m]).
     """
-    from dem.model import from_assembly
     from dem.protocols import tilt
-    from specimens.blocks import discretise
 
-    arch = arch_from_params(case["arch"])
-    s = float(case.get("time_scale", 1.0))
-    asm = discretise(arch, n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
-    res = tilt(from_assembly(asm, name=case["label"]), _scaled_settings(case), _scaled_protocol(case["protocol"], s),
-               label=case["label"])
+    model, settings, proto = _case_setup(case)
+    res = tilt(model, settings, proto, label=case["label"])
     joints = [j.to_dict() if hasattr(j, "to_dict") else dict(j) for j in res.joints]
     fw = res.collapse.history.friction_work if getattr(res, "collapse", None) is not None else float("nan")
     return {
@@ -227,18 +239,12 @@ def replay_tilt(case: dict, results: dict):
     (upper end of the bracket) is simulated again. The engines are deterministic for identical
     command sequences, so this is the simulation the case ran (one simulation, not a tilt test)."""
     from dem import detect
-    from dem.model import from_assembly
     from dem.protocols import TiltResult, hold_level
     from dem.provenance import run_provenance
-    from specimens.blocks import discretise
 
-    proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
+    model, settings, proto = _case_setup(case)
     if proto.kind != "hold":
         raise ArchdemInputError(f"only hold-protocol tilt cases can be replayed, not {proto.kind!r}")
-    settings = _scaled_settings(case)
-    arch = arch_from_params(case["arch"])
-    model = from_assembly(discretise(arch, n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"]),
-                          name=case["label"])
     lo, hi = (float(x) for x in results["bracket"])
     sim = hold_level(model, settings, proto, hi)
     levels = [(float(a), bool(b)) for a, b in np.asarray(results["levels"]).reshape(-1, 2)]
