@@ -61,6 +61,9 @@ def plot_bracket(result, ax=None):
     for k, (lam, col) in enumerate(result.levels, start=1):
         ax.plot(k, lam, "x" if col else "o", color="tab:red" if col else "tab:green")
     ax.axhspan(*result.bracket, color="0.9")
+    from matplotlib.ticker import MaxNLocator
+
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))  # simulations are counted
     ax.set_xlabel("simulation")
     ax.set_ylabel("lambda")
     ax.set_title(f"bracket [{result.bracket[0]:.4f}, {result.bracket[1]:.4f}]", fontsize=9)
