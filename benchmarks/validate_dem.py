@@ -51,7 +51,7 @@ def one(job: tuple[str, str]) -> dict:
     sid, config = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, lp_guess, tilt
+    from dem.protocols import tilt
     from dem.settings import NO_SLIDING_MU, Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
@@ -61,10 +61,8 @@ def one(job: tuple[str, str]) -> dict:
     lp = solve_lp(asm, float("inf"), float("inf"))
     lp_ref = solve_lp(asm, 0.577, 1.0)
     t0 = time.perf_counter()
-    # the hold protocol as `archdem tilt` runs it: bracket started around the LP (both ends simulated)
-    s_ns, s_ref = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), Settings()
-    ns = tilt(m, s_ns, TiltProtocol(guess=lp_guess(asm, s_ns)), label=sid)
-    ref = tilt(m, s_ref, TiltProtocol(guess=lp_guess(asm, s_ref)), label=sid)
+    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), label=sid)
+    ref = tilt(m, Settings(), label=sid)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config)

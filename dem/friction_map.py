@@ -59,6 +59,11 @@ DEM_CASE = "dem.friction_map:tilt_case"
 SYNTHETIC_CASE = "dem.friction_map:synthetic_case"
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
+# Default protocol of a map tilt: hold-and-bisect to MAP_TILT_TOL, first bracket around the static
+# LP of the same blocks at the case's friction ("guess": "lp", see _case_setup): 4 simulations per
+# tilt instead of 7. The 0.5 % tilt test proper keeps the ramp-scan start, whose hinge layouts were
+# validated (benchmarks/validate_dem.py: 20 of 22 against 16 of 22 with the LP start).
+MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "guess": "lp"}
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)
 LP_REL_TOL = 1e-6  # lambda_LP(mu) counts as the no-sliding value within this relative tolerance
@@ -154,7 +159,7 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     return {
         "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
-        "protocol": dict(protocol if protocol is not None else {"kind": "hold", "tol": MAP_TILT_TOL}),
+        "protocol": dict(protocol if protocol is not None else MAP_PROTOCOL),
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),
     }
@@ -167,7 +172,7 @@ def _scaled_protocol(d: dict, s: float):
     unknown = set(d) - names
     if unknown:
         raise ArchdemInputError(f"unknown tilt protocol fields: {sorted(unknown)}")
-    p = TiltProtocol(**d)
+    p = TiltProtocol(**{k: v for k, v in d.items() if not (k == "guess" and v == "lp")})
     kw = {}
     for k in ("ramp_time", "hold_time", "stair_hold"):
         if k in names:
@@ -190,8 +195,8 @@ def _scaled_settings(case: dict):
 
 
 def _case_setup(case: dict):
-    """Model, settings and protocol of a DEM tilt case. A hold protocol that names no ``guess``
-    starts its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`)."""
+    """Model, settings and protocol of a DEM tilt case. A protocol with ``"guess": "lp"`` starts
+    its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`)."""
     from dataclasses import replace
 
     from dem.model import from_assembly
@@ -201,7 +206,7 @@ def _case_setup(case: dict):
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
     settings = _scaled_settings(case)
     proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
-    if proto.kind == "hold" and "guess" not in case["protocol"]:
+    if proto.kind == "hold" and case["protocol"].get("guess") == "lp":
         proto = replace(proto, guess=lp_guess(asm, settings))
     return from_assembly(asm, name=case["label"]), settings, proto
 
@@ -527,7 +532,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     is a :func:`dem.sweep.run_study` on ``out_path``; ``resume=True`` continues an interrupted
     map without recomputing stored cases. ``protocol`` / ``settings``: overrides (catalogue
     scale) of the tilt protocol / simulation settings (default protocol: ``hold`` with
-    ``tol = MAP_TILT_TOL``). ``func``: the case function (``DEM_CASE`` or ``SYNTHETIC_CASE``);
+    ``tol = MAP_TILT_TOL``, LP-started, ``MAP_PROTOCOL``). ``func``: the case function (``DEM_CASE`` or ``SYNTHETIC_CASE``);
     ``extra``: additional parameters merged into every case (e.g. ``{"synthetic": {...}}``).
     Raises :class:`ArchdemInputError`, :class:`dem.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
@@ -540,7 +545,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         raise ArchdemInputError(f"mu_base must be a finite number > 0, got {mu_base!r}")
     if not (isinstance(refine, int) and 0 <= refine <= 20):
         raise ArchdemInputError(f"refine (bisection steps) must be an integer in 0..20, got {refine!r}")
-    protocol = dict(protocol if protocol is not None else {"kind": "hold", "tol": MAP_TILT_TOL})
+    protocol = dict(protocol if protocol is not None else MAP_PROTOCOL)
     _scaled_protocol(protocol, 1.0)  # validate in the main process
     study_attrs = {"study": STUDY_KIND, "config": config, "mu_base": float(mu_base), "protocol": protocol,
                    "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs)}

@@ -11,7 +11,7 @@ from specimens.errors import ArchdemInputError
 def _run(args: argparse.Namespace) -> int:
     from dem.atomic import unique_run_path
     from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, lp_guess, tilt
+    from dem.protocols import TiltProtocol, tilt
     from dem.results import save_result
     from dem.settings import Settings
     from specimens.blocks import discretise
@@ -31,8 +31,7 @@ def _run(args: argparse.Namespace) -> int:
     out = writable_dir(args.out)
     if args.plot:
         writable_file(args.plot)
-    guess = lp_guess(asm, settings) if args.protocol == "hold" else None
-    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, guess=guess), label=label)
+    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol), label=label)
     path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
     if args.plot:
         from dem.figures import save_tilt_figure
