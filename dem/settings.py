@@ -4,11 +4,12 @@ Every field has a default that passes the validation of spec §3.4; the comment 
 gives the measurement behind it (PyBullet 3.2.7, catalogue specimens, see
 ``benchmarks/validate_dem.py`` and spec 04 §4.1). The object is stored in every result file.
 
-Measured with these defaults (benchmarks/results/validate_dem.md, 11 specimens x glued/free):
-rest drift in 5 s 0.017-0.102 mm (largest point displacement of any body); single block
-lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda 0.6-4.1 % below the discrete LP
-(one outlier, free Sh1-Sd025, -8.5 % with a disordered crown collapse), hinge layout equal to
-the LP's on 20 of 22.
+Measured with these defaults (benchmarks/results/validate_dem.md, 11 specimens x glued/free,
+latest run): rest drift in 5 s 0.012-0.104 mm (largest point displacement of any body; free
+Sh1-Sd010 just above the 0.1 mm gate); single block lambda within 0.4 % of mu and of b/h;
+no-sliding tilt lambda 0.3-5.1 % below the discrete LP (one outlier, free Sh1-Sd025, -8.5 % with
+a disordered crown collapse; 8 of 22 beyond 3 %), hinge layout equal to the LP's or within 0.5 %
+of its lambda on 18 of 22.
 """
 from __future__ import annotations
 
