@@ -1,5 +1,5 @@
 """The staircase and continuous-ramp tilt protocols against the closed form of a single block
-(spec §3.4.1): the same two cases the hold-and-bisect protocol passes in test_engine_pybullet."""
+(spec §3.4.1): the same two cases the hold-and-bisect protocol passes in test_engines_shared."""
 import functools
 
 import pytest
