@@ -61,11 +61,11 @@ def _record_plan(ctx: CampaignContext) -> list:
 UNIT_CORE_S = {
     ("tilt", True): 24.0,  # one tilt test, bisected to 2 % (4 simulations)
     ("tilt", False): 36.0,  # ... to 0.5 % (6 simulations)
-    ("map", True): 20.0,  # one map case (tilt to 2 %)
-    ("map", False): 20.0,
+    ("map", True): 24.0,  # one map case (tilt to 2 %, LP-started bracket)
+    ("map", False): 24.0,
     ("shake", True): 50.0,  # one threshold (scan + bisection) at one frequency, tol 2 %
     ("shake", False): 75.0,  # ... ceiling 6 x lambda and tol 1 %
-    ("record", True): 125.0,  # one scaled-record threshold, 3 s window
+    ("record", True): 150.0,  # one scaled-record threshold, 3 s window
     ("record", False): 350.0,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
