@@ -25,33 +25,6 @@ def _save(fig, out_dir: Path, stem: str) -> Path:
     return target
 
 
-def _series_row(args) -> dict:
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms
-    from analytic.two_bar import lambda_two_bar
-    from specimens.blocks import discretise
-
-    s, with_discrete = args
-    a = s.arch
-    c = continuous_collapse(a)
-    c8 = continuous_collapse(a, effective_thickness=0.8)
-    d = enumerate_mechanisms(discretise(a, config="glued")).lam if with_discrete else np.nan
-    return dict(id=s.id, Sh=round(a.Sh, 6), Sd=round(a.Sd, 6), Rc=a.Rc, cont=c.lam, cont08=c8.lam, disc=d,
-                two_bar=lambda_two_bar(a), polar=c.polar_angles(a))
-
-
-def _series(specimens, with_discrete: bool) -> list[dict]:
-    """One row of multipliers per specimen, computed on all cores (about 1 s per arch)."""
-    from concurrent.futures import ProcessPoolExecutor
-
-    jobs = [(s, with_discrete) for s in specimens]
-    workers = min(len(jobs), os.cpu_count() or 1)
-    if workers <= 1:
-        return [_series_row(j) for j in jobs]
-    with ProcessPoolExecutor(workers) as ex:
-        return list(ex.map(_series_row, jobs))
-
-
 def _lambda_plot(rows, title: str, with_discrete: bool):
     import matplotlib.pyplot as plt
 
@@ -126,8 +99,10 @@ def mechanism_figure(spec_id: str, arch, config: str = "glued"):
     return fig
 
 
-def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True) -> list[Path]:
-    """Write all limit-analysis figures to ``out_dir``; return the files written."""
+def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True, rows: list[dict] | None = None) -> list[Path]:
+    """Write all limit-analysis figures to ``out_dir``; return the files written. ``rows``: the
+    catalogue's :func:`analytic.summary.multiplier_series`, if the caller has computed it."""
+    from analytic.summary import multiplier_series
     import matplotlib
 
     matplotlib.use("Agg", force=False)
@@ -136,13 +111,14 @@ def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True) -> li
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
-    rows = _series(CATALOGUE, with_discrete=True)
+    if rows is None:
+        rows = multiplier_series(CATALOGUE)
     files.append(_save(_lambda_plot(rows, "Catalogue (Rc = 0.2 m): collapse multiplier", True), out,
                        "limit_lambda_vs_Sd_catalogue"))
     files.append(_save(_hinge_plot(rows, "Catalogue: continuous hinge positions"), out, "limit_hinges_vs_Sd_catalogue"))
     if full_scale:
         fs = [s for s in full_scale_set() if abs(s.arch.Rc - 5.0) < 1e-9]  # multipliers are scale-free
-        rows_fs = _series(fs, with_discrete=True)
+        rows_fs = multiplier_series(fs)
         files.append(_save(_lambda_plot(rows_fs, "Full-scale set (span 10 m; lambda is scale-free)", True), out,
                            "limit_lambda_vs_Sd_full_scale"))
         files.append(_save(_hinge_plot(rows_fs, "Full-scale set: continuous hinge positions"), out,

@@ -83,16 +83,19 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
     from analytic.figures_limit import catalogue_figures
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms
-    from analytic.summary import analyse
+    from analytic.summary import analyse, multiplier_series
     from specimens.blocks import discretise
-    from specimens.catalogue import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+    from specimens.catalogue import CATALOGUE, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
+    # the figures' series of the whole catalogue also gives the 80 % thickness multipliers
+    series = multiplier_series(CATALOGUE)
+    lam80_of = {r["id"]: r["cont08"] for r in series}
     rows = []
     for s in ctx.specimens:
         a = analyse(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)
         other = "free" if ctx.config == "glued" else "glued"
         lam_other = enumerate_mechanisms(discretise(s.arch, config=other)).lam
-        lam80 = continuous_collapse(s.arch, effective_thickness=0.8).lam
+        lam80 = lam80_of[s.id] if s.id in lam80_of else continuous_collapse(s.arch, effective_thickness=0.8).lam
         sliding = [j for j, v in a["joints_lp"].items() if "sliding" in v["state"]]
         rows.append({
             "id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6),
@@ -106,7 +109,7 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
             "lp_sliding_joints": " ".join(sliding),
         })
     _write_csv(d / "analytic.csv", rows)
-    figs = catalogue_figures(d / "figures", full_scale=True)
+    figs = catalogue_figures(d / "figures", full_scale=True, rows=series)
     keep = [f for f in figs if "mechanism" not in f.name] + [f for f in figs if "mechanism" in f.name][:2]
     figures = [{"path": f"analytic/figures/{f.name}", "caption": f.stem.replace("_", " ")} for f in keep]
     # findings computed from the rows

@@ -197,9 +197,10 @@ def _scaled_settings(case: dict):
     return Settings(mu_joint=case["mu_joint"], mu_base=case["mu_base"], **kw)
 
 
-def _case_setup(case: dict):
+def _case_setup(case: dict, with_guess: bool = True):
     """Model, settings and protocol of a DEM tilt case. A protocol with ``"guess": "lp"`` starts
-    its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`)."""
+    its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`), solved
+    only ``with_guess`` (a replay of one level does not bracket)."""
     from dataclasses import replace
 
     from dem.model import from_assembly
@@ -209,7 +210,7 @@ def _case_setup(case: dict):
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
     settings = _scaled_settings(case)
     proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
-    if proto.kind == "hold" and case["protocol"].get("guess") == "lp":
+    if with_guess and proto.kind == "hold" and case["protocol"].get("guess") == "lp":
         proto = replace(proto, guess=lp_guess(asm, settings))
     return from_assembly(asm, name=case["label"]), settings, proto
 
@@ -250,7 +251,7 @@ def replay_tilt(case: dict, results: dict):
     from dem.protocols import TiltResult, hold_level
     from dem.provenance import run_provenance
 
-    model, settings, proto = _case_setup(case)
+    model, settings, proto = _case_setup(case, with_guess=False)
     if proto.kind != "hold":
         raise ArchdemInputError(f"only hold-protocol tilt cases can be replayed, not {proto.kind!r}")
     lo, hi = (float(x) for x in results["bracket"])

@@ -1,14 +1,15 @@
-"""Limit-analysis figures: the per-specimen series computed on a process pool equal the serial ones."""
+"""The multiplier series of the figures and the campaign: computed on a process pool, equal to
+the serial computation and in the order given."""
 import numpy as np
 
-from analytic.figures_limit import _series, _series_row
+from analytic.summary import _series_row, multiplier_series
 from specimens.catalogue import get_specimen
 
 
 def test_parallel_series_equals_serial():
     specs = [get_specimen("Sh06-Sd015"), get_specimen("Sh1-Sd025")]
-    par = _series(specs, with_discrete=True)
-    ser = [_series_row((s, True)) for s in specs]
+    par = multiplier_series(specs)
+    ser = [_series_row(s) for s in specs]
     assert [r["id"] for r in par] == ["Sh06-Sd015", "Sh1-Sd025"]  # order kept
     for a, b in zip(par, ser):
         for k in ("cont", "cont08", "disc", "two_bar"):
