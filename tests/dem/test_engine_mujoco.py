@@ -122,6 +122,6 @@ def test_options_reach_the_model():
     v.build(m, _s())
     try:
         assert v.versions()["engine"] == ENGINE and v.versions()["mujoco"]
-        assert v._m.opt.timestep == pytest.approx(DEFAULT_OPTIONS.max_dt)  # 1 ms -> 4 x 0.25 ms
+        assert v._m.opt.timestep == pytest.approx(DEFAULT_OPTIONS.max_dt)  # 0.5 ms -> 2 x 0.25 ms
     finally:
         v.close()
