@@ -52,21 +52,20 @@ def _record_plan(ctx: CampaignContext) -> list:
     return [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1]
 
 
-# Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies. Quick values:
-# measured on a 2-core machine stepping a glued specimen in 2 ms (per-step wall x 2 cores /
-# units of the quick campaign); machines seen here step 1-2 ms, so the estimate errs long.
-# Full values: the quick ones scaled by the number and length of simulations (tilt: 6 instead
-# of 4 per test for the 0.5 % bracket; shake: higher ceiling and 1 % tolerance; record: 7 s
-# instead of 3 s window), not measured end to end.
+# Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies, defaults dt 0.5 ms /
+# 100 iterations (wall of the step x 2 cores / units), measured on a 2-core machine stepping a glued
+# specimen at 2.6 s per simulated second: quick values from a `make demo` run, full values from a
+# full campaign on two specimens (Sh02-Sd015, Sh1-Sd025: 4 tilt tests, 32 map cases, 5 shake
+# thresholds, 1 record threshold). Faster machines finish proportionally sooner.
 UNIT_CORE_S = {
-    ("tilt", True): 24.0,  # one tilt test, bisected to 2 % (4 simulations)
-    ("tilt", False): 36.0,  # ... to 0.5 % (6 simulations)
-    ("map", True): 24.0,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 24.0,
+    ("tilt", True): 34.0,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
+    ("tilt", False): 69.0,  # ... to 0.5 % from the ramp scan (6-9 simulations)
+    ("map", True): 28.0,  # one map case (tilt to 2 %, LP-started bracket)
+    ("map", False): 26.0,
     ("shake", True): 50.0,  # one threshold (scan + bisection) at one frequency, tol 2 %
-    ("shake", False): 75.0,  # ... ceiling 6 x lambda and tol 1 %
-    ("record", True): 150.0,  # one scaled-record threshold, 3 s window
-    ("record", False): 350.0,  # ... 7 s window, tol 1 %
+    ("shake", False): 55.0,  # ... ceiling 6 x lambda and tol 1 %
+    ("record", True): 160.0,  # one scaled-record threshold, 3 s window
+    ("record", False): 200.0,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
 
