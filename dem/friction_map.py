@@ -63,7 +63,8 @@ MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protoco
 # LP of the same blocks at the case's friction ("guess": "lp", see _case_setup): 4 simulations per
 # tilt instead of 7. The 0.5 % tilt test proper keeps the ramp-scan start: it is validated against
 # that LP, and near the threshold PyBullet's outcome is not monotonic in lambda, so a bracket seeded
-# at the LP samples the noisy band near the LP (benchmarks/validate_dem.py, same machine and code:
+# at the LP samples the noisy band near the LP (benchmarks/validate_dem.py, same machine and code,
+# measured with the former dt 1 ms / 200 iteration defaults and not repeated at the current ones:
 # LP start 4 of 22 cases beyond 3 %, mean |error| 2.0 %, hinge layouts 16 of 22; scan start 8 of
 # 22, 2.5 %, 18 of 22). The map's output is the mode and mu*, where the saving matters.
 MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "guess": "lp"}
