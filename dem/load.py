@@ -7,6 +7,10 @@
 * a horizontal ground acceleration ``a_g(t)`` (:class:`analytic.inputs.GroundMotion`), applied
   as a uniform inertial field in the table frame: the base is fixed and the bodies feel
   ``(-a_g(t), -g, 0)`` (d'Alembert). A ground acceleration to +x throws the arch to -x.
+  With ``driven_base=True`` the same motion is applied the laboratory way instead: gravity
+  ``(0, -g, 0)`` and the base moved by the ground displacement (:func:`dem.protocols.simulate`
+  integrates ``a_g``); ``gravity(t)`` is then the equivalent field in the table frame, which is
+  what the results record.
 """
 from __future__ import annotations
 
@@ -115,19 +119,25 @@ class TiltStairs(Load):
 
 @dataclass(frozen=True)
 class GroundShake(Load):
-    """Horizontal ground acceleration ``motion`` (starting at ``t0`` [s]) as an inertial field."""
+    """Horizontal ground acceleration ``motion`` (starting at ``t0`` [s]) as an inertial field, or,
+    with ``driven_base``, as the motion of the base under plain gravity."""
 
     motion: GroundMotion
     t0: float = 0.0
     g: float = G
+    driven_base: bool = False
+
+    def ground_acceleration(self, t: float) -> float:
+        """Table acceleration a_g [m/s^2] (+x) at time ``t`` [s]."""
+        return float(self.motion.acceleration(t - self.t0))
 
     @property
     def duration(self) -> float:  # type: ignore[override]
         return self.t0 + self.motion.duration
 
     def gravity(self, t: float) -> np.ndarray:
-        a = float(self.motion.acceleration(t - self.t0))
-        return np.array([-a, -self.g, 0.0])
+        return np.array([-self.ground_acceleration(t), -self.g, 0.0])
 
     def describe(self) -> dict:
-        return {"kind": "ground-motion", "t0": self.t0, "g": self.g, "motion": self.motion.describe()}
+        return {"kind": "ground-motion", "t0": self.t0, "g": self.g, "motion": self.motion.describe(),
+                "load": "driven-base" if self.driven_base else "inertial"}

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -87,12 +87,16 @@ def _kinetic_energy(model: Model, v: np.ndarray, w: np.ndarray, R: np.ndarray) -
     return ke
 
 
-def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray) -> float:
+def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray, base_x: float = 0.0) -> float:
+    """Friction dissipation rate [W]; ``v``, ``pos`` in the table frame, which the engine's
+    contact points are moved into by the base displacement ``base_x`` [m]."""
     c = engine.contacts()
     if c is None:
         return float("nan")
     if len(c.fn) == 0:
         return 0.0
+    if base_x:
+        c = replace(c, point=c.point - np.array([base_x, 0.0, 0.0]))
 
     def vel(idx, p):
         out = np.zeros_like(p)
@@ -111,6 +115,10 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
 
     ``record_every`` [s] defaults to ``settings.record_every``; the collapse criterion is
     checked at each record. ``engine``: an unbuilt backend (default: ``settings.engine``).
+    A load with ``driven_base`` (a ground motion) moves the base by the ground displacement
+    (velocity and displacement integrated with the engine's own symplectic Euler, so that the
+    relative motion matches the inertial field step for step) under plain gravity; poses and
+    velocities are then recorded in the table frame, as with the inertial field.
     """
     from scipy.spatial.transform import Rotation
 
@@ -124,13 +132,21 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     d_c = settings.collapse_fraction * model.size
     T, P, Q, Gv, D, KE, FP = [], [], [], [], [], [], []
     collapsed, t_col = False, float("nan")
+    driven = bool(getattr(load, "driven_base", False))
+    xb = vb = 0.0  # prescribed base displacement [m] and velocity [m/s] (driven base)
     try:
-        eng.build(model, settings)
+        eng.build(model, settings, driven_base=driven)
         step = 0
+        if driven:
+            eng.set_gravity(np.array([0.0, -load.g, 0.0]))
 
         def record() -> tuple[float, int]:
             pos, R = eng.poses()
             v, w = eng.velocities()
+            bx, bv = eng.base_motion()
+            if driven:  # into the table frame (the actual base motion, not the prescribed one)
+                pos = pos - np.array([bx, 0.0, 0.0])
+                v = v - np.array([bv, 0.0, 0.0])
             d, i = tracker.max_displacement(pos, R)
             T.append(step * settings.dt)
             P.append(pos)
@@ -138,14 +154,19 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
             Gv.append(load.gravity(step * settings.dt))
             D.append(d)
             KE.append(_kinetic_energy(model, v, w, R))
-            FP.append(_friction_power(eng, v, w, pos) if friction_work else float("nan"))
+            FP.append(_friction_power(eng, v, w, pos, bx) if friction_work else float("nan"))
             return d, tracker.body_speed(v, w, i)
 
         record()
         while step < n_steps:
             n = min(rec, n_steps - step)
             for _ in range(n):
-                eng.set_gravity(load.gravity(step * settings.dt))
+                if driven:
+                    vb += load.ground_acceleration(step * settings.dt) * settings.dt
+                    xb += vb * settings.dt
+                    eng.drive_base(xb, vb)
+                else:
+                    eng.set_gravity(load.gravity(step * settings.dt))
                 eng.step(1)
                 step += 1
             d, speed = record()

@@ -1,8 +1,10 @@
 """Virtual shake table: one run of a horizontal ground motion on a rigid-block model.
 
-Load: the uniform inertial field of :class:`dem.load.GroundShake` (fixed base, every body feels
-``(-a_g(t), -g, 0)``). It is exact for a rigid table and needs no kinematic body (PyBullet has
-none); a driven base is not implemented (see the module report of the issue).
+Load (``ShakeProtocol.load``): ``inertial`` (default), the uniform inertial field of
+:class:`dem.load.GroundShake` (fixed base, every body feels ``(-a_g(t), -g, 0)``), exact for a
+rigid table and needing no kinematic body (PyBullet has none); or ``driven-base``, plain gravity
+and the base moved by the ground displacement (a heavy dynamic base in PyBullet, a slide joint in
+MuJoCo; see the engines). Both give the same relative motion; results are in the table frame.
 
 Run: the motion, then a zero tail (``ShakeProtocol.tail`` [s]) so that a rocking arch either
 comes back to rest or falls. Poses are recorded every ``ShakeProtocol.record_every`` [s].
@@ -43,6 +45,7 @@ from dem.settings import Settings
 from specimens.errors import ArchdemInputError
 
 FORMAT = "archdem-shake-1"
+LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module docstring)
 
 
 @dataclass(frozen=True)
@@ -55,7 +58,7 @@ class ShakeProtocol:
     record_every: float = 0.005  # [s] history sampling (and collapse check)
     onset_mm: float = 0.1  # crown displacement at which the motion is said to start [mm]
     stop_on_collapse: bool = True
-    load: str = "inertial"  # only the uniform inertial field is implemented
+    load: str = "inertial"  # inertial (uniform inertial field, fixed base) | driven-base
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.tail) and self.tail >= 0):
@@ -66,8 +69,8 @@ class ShakeProtocol:
             v = getattr(self, k)
             if not (math.isfinite(v) and v > 0):
                 raise ArchdemInputError(f"shake protocol {k} must be > 0, got {v!r}")
-        if self.load != "inertial":
-            raise ArchdemInputError(f"load {self.load!r} is not available; only 'inertial' (uniform inertial field)")
+        if self.load not in LOADS:
+            raise ArchdemInputError(f"shake load must be one of {', '.join(LOADS)}, got {self.load!r}")
 
     def total_duration(self, motion: GroundMotion) -> float:
         return float(self.duration) if self.duration is not None else float(motion.duration) + self.tail
@@ -173,7 +176,8 @@ def shake(model: Model, motion: GroundMotion, settings: Settings | None = None,
     proto = protocol or ShakeProtocol()
     st = shake_settings(settings, proto)
     duration = proto.total_duration(motion)
-    sim = simulate(model, st, GroundShake(motion, g=st.g), duration, record_every=st.record_every,
+    load = GroundShake(motion, g=st.g, driven_base=proto.load == "driven-base")
+    sim = simulate(model, st, load, duration, record_every=st.record_every,
                    stop_on_collapse=proto.stop_on_collapse)
     u = crown_displacement(model, sim)
     t_start, t_reb = first_rebound(sim.history.t, u, proto.onset_mm * 1e-3)

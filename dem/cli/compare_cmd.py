@@ -53,7 +53,7 @@ def register(sub) -> None:
     p.add_argument("--engines", default="pybullet,mujoco", help="two engines (default pybullet,mujoco)")
     p.add_argument("--friction", choices=("both", "none", "reference"), default="both",
                    help="no sliding, reference friction 0.577/1.0, or both (default)")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] for both engines (default 1e-3)")
+    p.add_argument("--dt", type=float, default=None, help="time step [s] for both engines (default 5e-4)")
     p.add_argument("--workers", type=int, default=1, help="processes (default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")

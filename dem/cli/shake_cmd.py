@@ -70,7 +70,7 @@ def _run_shake(args: argparse.Namespace) -> int:
 
     motion = _motion(args)
     label, _, _, model, settings = _model_and_settings(args)
-    proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full)
+    proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full, load=args.load)
     out = writable_dir(args.out)
     if args.plot:
         writable_file(args.plot, overwrite=False)
@@ -106,7 +106,7 @@ def _run_threshold(args: argparse.Namespace) -> int:
     _positive("--a-min", a_min)
     a_max = args.a_max if args.a_max is not None else 5.0 * a_min
     _positive("--tol", args.tol)
-    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail), a_min_g=a_min, a_max_g=a_max,
+    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=a_min, a_max_g=a_max,
                     scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
     s = {"id": label, "lambda": lam, "config": args.config, "mu_joint": settings.mu_joint,
          "mu_base": settings.mu_base, **res.summary()}
@@ -137,15 +137,17 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
     p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 1e-3)")
+    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
     add_engine_argument(p)
     p.add_argument("--tail", type=float, default=1.0, help="zero-acceleration tail after the motion [s] (default 1)")
+    p.add_argument("--load", choices=("inertial", "driven-base"), default="inertial",
+                   help="ground motion as a uniform inertial field on a fixed base (default) or as a moving base")
     p.add_argument("--json", action="store_true", help="print one JSON object")
 
 
 def register(sub) -> None:
     p = sub.add_parser("shake", help="virtual shake table: one sine pulse or recorded accelerogram",
-                       description="One shake-table run (uniform inertial field, fixed base).")
+                       description="One shake-table run (uniform inertial field on a fixed base, or --load driven-base).")
     _common(p)
     p.add_argument("--sine", type=float, default=None, metavar="FREQ", help="one-cycle sine pulse of FREQ [Hz]")
     p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help="sine amplitude [g]")

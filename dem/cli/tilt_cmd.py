@@ -56,7 +56,7 @@ def register(sub) -> None:
     p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
     p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default="hold")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 1e-3)")
+    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
     add_engine_argument(p)
     p.add_argument("--out", default="runs/tilt", help="directory for the result file (default runs/tilt)")
     p.add_argument("--json", action="store_true", help="print one JSON object")

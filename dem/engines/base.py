@@ -4,6 +4,11 @@ Poses are reported in the model's arch frame as the position of each body's cent
 rotation matrix taking the body from its initial (as-built) orientation to the current one:
 a material point at ``x0`` initially is at ``pos + R @ (x0 - c0)``. Engines that use other
 body frames (e.g. principal axes) convert internally.
+
+Poses, velocities and contacts are in the world (laboratory) frame. With a driven base
+(``build(..., driven_base=True)``) the base is a body whose horizontal motion the caller
+prescribes every step (:meth:`Engine.drive_base`); :meth:`Engine.base_motion` gives where it
+actually is, so that callers can express results in the table frame.
 """
 from __future__ import annotations
 
@@ -35,8 +40,19 @@ class Engine(abc.ABC):
     name: str = "abstract"
 
     @abc.abstractmethod
-    def build(self, model, settings) -> None:
-        """Create the bodies of ``model`` (at their initial poses, at rest) with ``settings``."""
+    def build(self, model, settings, driven_base: bool = False) -> None:
+        """Create the bodies of ``model`` (at their initial poses, at rest) with ``settings``;
+        ``driven_base``: the base moves horizontally as prescribed by :meth:`drive_base`
+        (otherwise it is fixed)."""
+
+    def drive_base(self, x: float, v: float) -> None:
+        """Prescribe the base's horizontal (+x) displacement ``x`` [m] at the end of the next
+        step and its velocity ``v`` [m/s] during it (only after ``build(..., driven_base=True)``)."""
+        raise NotImplementedError(f"the {self.name} engine cannot drive the base")
+
+    def base_motion(self) -> tuple[float, float]:
+        """Actual horizontal displacement [m] and velocity [m/s] of the base (0, 0 if fixed)."""
+        return 0.0, 0.0
 
     @abc.abstractmethod
     def set_gravity(self, vec: np.ndarray) -> None:

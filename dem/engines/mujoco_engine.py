@@ -8,7 +8,9 @@ The model is built in memory as an MJCF string from the engine-neutral :class:`d
   an explicit ``<inertial>`` with the mass and the full centroidal inertia tensor;
 * one convex mesh geom per convex piece (inline vertices of the prism, offset outward by
   ``settings.inflate`` as for PyBullet so that touching faces are in contact at step 0); the
-  base pads are static geoms of the world body;
+  base pads are static geoms of the world body, or, with a driven base (shake table), geoms of
+  a body 10^6 times heavier than the arch on a horizontal slide joint whose velocity is set
+  every step to the one that lands it on the prescribed position;
 * friction: MuJoCo combines a contact pair's friction as the *maximum* of the two geoms'
   values unless their ``priority`` differs, in which case the higher-priority geom's value is
   used. Blocks carry ``mu_joint`` at priority 0, the base ``mu_base`` at priority 1: any pair of
@@ -81,8 +83,9 @@ def substeps(dt: float, max_dt: float) -> int:
     return max(1, math.ceil(dt / max_dt - 1e-9))
 
 
-def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTIONS) -> str:
-    """The MJCF text of ``model`` (bodies, convex mesh pieces, base, options)."""
+def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTIONS, driven_base: bool = False) -> str:
+    """The MJCF text of ``model`` (bodies, convex mesh pieces, base, options); ``driven_base``:
+    the base is a heavy body on an x slide joint named ``table``."""
     o = options
     n_sub = substeps(settings.dt, o.max_dt)
     h = settings.dt / n_sub
@@ -100,6 +103,11 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
         mesh(f"base{k}", poly, model.base.width, 0.0, np.zeros(3))
         world.append(f'<geom name="base{k}" type="mesh" mesh="base{k}" friction="{_f(settings.mu_base)} 0 0" '
                      f'priority="1" {sol}/>')
+    if driven_base:
+        m_base = 1e6 * sum(b.mass for b in model.bodies)
+        world[:] = ['<body name="table" pos="0 0 0"><joint name="table" type="slide" axis="1 0 0" damping="0"/>'
+                    f'<inertial pos="0 0 0" mass="{_f(m_base)}" diaginertia="{_f([m_base] * 3)}"/>'
+                    + "".join(world) + '</body>']
     for i, b in enumerate(model.bodies):
         c = np.asarray(b.centroid, float)
         I = np.asarray(b.inertia, float)
@@ -139,15 +147,19 @@ class MuJoCoEngine(Engine):
         self._m = None
         self._d = None
 
-    def build(self, model: Model, settings: Settings) -> None:
+    def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
         import mujoco
 
         if self._m is not None:
             raise RuntimeError("engine already built")
         self._mj = mujoco
         self.model, self.settings = model, settings
-        self._m = mujoco.MjModel.from_xml_string(mjcf(model, settings, self.options))
+        self._m = mujoco.MjModel.from_xml_string(mjcf(model, settings, self.options, driven_base))
         self._d = mujoco.MjData(self._m)
+        self._table = None
+        if driven_base:
+            j = mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_JOINT, "table")
+            self._table = (int(self._m.jnt_qposadr[j]), int(self._m.jnt_dofadr[j]))
         self._nsub = substeps(settings.dt, self.options.max_dt)
         self._bid = np.array([mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_BODY, f"body{i}")
                               for i in range(model.n_bodies)])
@@ -166,6 +178,20 @@ class MuJoCoEngine(Engine):
 
     def step(self, n: int = 1) -> None:
         self._mj.mj_step(self._m, self._d, nstep=n * self._nsub)
+
+    def drive_base(self, x: float, v: float) -> None:
+        if self._table is None:
+            raise RuntimeError("the base is fixed: build the engine with driven_base=True")
+        qa, da = self._table
+        # the velocity that ends this step at x (absorbing earlier drift; ~v); the heavy table
+        # keeps it through the sub-steps to within the arch's contact impulses / 1e6
+        self._d.qvel[da] = (x - float(self._d.qpos[qa])) / self.settings.dt
+
+    def base_motion(self) -> tuple[float, float]:
+        if self._table is None:
+            return 0.0, 0.0
+        qa, da = self._table
+        return float(self._d.qpos[qa]), float(self._d.qvel[da])
 
     def poses(self) -> tuple[np.ndarray, np.ndarray]:
         d = self._d

@@ -10,6 +10,10 @@ Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
   together; linear/angular damping 0 (Bullet's default damping 0.04 is not physical here);
 * Bullet combines the friction of a contact pair as the *product* of the two bodies'
   coefficients: blocks get ``sqrt(mu_joint)``, the base ``mu_base / sqrt(mu_joint)``;
+* driven base (shake table): PyBullet has no kinematic bodies, so the base is a dynamic body
+  10^6 times heavier than the arch, its weight cancelled by an external force every step and
+  its velocity reset every step to the one that lands it on the prescribed position at the end
+  of the step (spec 04 §4.3: such a base tracked the motion to 0.3 um);
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
@@ -89,7 +93,7 @@ class PyBulletEngine(Engine):
         self._tmp: Path | None = None
 
     # -- construction ---------------------------------------------------------------------
-    def build(self, model: Model, settings: Settings) -> None:
+    def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
         import pybullet as pb
         from pybullet_utils.bullet_client import BulletClient
 
@@ -129,11 +133,17 @@ class PyBulletEngine(Engine):
                 return p.createCollisionShape(pb.GEOM_MESH, fileName=files[0], flags=flags)
             return p.createCollisionShapeArray([pb.GEOM_MESH] * len(files), fileNames=files, flags=[flags] * len(files))
 
-        # base: static, identity frame
+        # base: identity frame; static, or (driven) dynamic and heavy with its centre of mass at the origin
         bshape = shape(model.base.pieces, model.base.width, np.eye(3), np.zeros(3), 0.0)
-        self._base = p.createMultiBody(baseMass=0.0, baseCollisionShapeIndex=bshape)
+        self._driven = bool(driven_base)
+        self._base_mass = 1e6 * sum(b.mass for b in model.bodies) if driven_base else 0.0
+        self._gravity = np.array([0.0, -settings.g, 0.0])
+        self._base = p.createMultiBody(baseMass=self._base_mass, baseCollisionShapeIndex=bshape)
         p.changeDynamics(self._base, -1, lateralFriction=f_base, restitution=settings.restitution,
                          rollingFriction=0.0, spinningFriction=0.0, frictionAnchor=int(settings.friction_anchor))
+        if driven_base:
+            p.changeDynamics(self._base, -1, linearDamping=0.0, angularDamping=0.0,
+                             activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
         for k, b in enumerate(model.bodies):
@@ -156,7 +166,28 @@ class PyBulletEngine(Engine):
 
     # -- running --------------------------------------------------------------------------
     def set_gravity(self, vec) -> None:
+        self._gravity = np.asarray(vec, float)
         self._p.setGravity(float(vec[0]), float(vec[1]), float(vec[2]))
+
+    def drive_base(self, x: float, v: float) -> None:
+        if not self._driven:
+            raise RuntimeError("the base is fixed: build the engine with driven_base=True")
+        p = self._p
+        pos, _ = p.getBasePositionAndOrientation(self._base)
+        dt = self.settings.dt
+        # the velocity that ends this step at x (it absorbs the drift of earlier steps; ~v), and
+        # back to y = z = 0; contact impulses of the arch change it by ~1e-6 within the step
+        p.resetBaseVelocity(self._base, ((x - pos[0]) / dt, -pos[1] / dt, -pos[2] / dt), (0.0, 0.0, 0.0))
+        # external forces last one step in PyBullet: cancel the base's weight for this step
+        f = (-self._base_mass * self._gravity).tolist()
+        p.applyExternalForce(self._base, -1, f, pos, self._pb.WORLD_FRAME)
+
+    def base_motion(self) -> tuple[float, float]:
+        if not self._driven:
+            return 0.0, 0.0
+        pos, _ = self._p.getBasePositionAndOrientation(self._base)
+        v, _ = self._p.getBaseVelocity(self._base)
+        return float(pos[0]), float(v[0])
 
     def step(self, n: int = 1) -> None:
         p = self._p
