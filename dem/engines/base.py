@@ -47,7 +47,9 @@ class Engine(abc.ABC):
 
     def drive_base(self, x: float, v: float) -> None:
         """Prescribe the base's horizontal (+x) displacement ``x`` [m] at the end of the next
-        step and its velocity ``v`` [m/s] during it (only after ``build(..., driven_base=True)``)."""
+        step and its nominal velocity ``v`` [m/s] during it (only after ``build(...,
+        driven_base=True)``). Engines that move a dynamic base by the velocity landing it on
+        ``x`` (both here: it also corrects any drift) need only ``x``."""
         raise NotImplementedError(f"the {self.name} engine cannot drive the base")
 
     def base_motion(self) -> tuple[float, float]:
