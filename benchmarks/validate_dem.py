@@ -8,7 +8,7 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start scan|lp]
 
 ``--start lp`` starts each hold-and-bisect at the static LP of the same blocks at the run's
-friction (:func:`dem.protocols.lp_guess`, the map's start) instead of the ramp scan.
+friction (``TiltProtocol(start="lp")``, the map's start) instead of the ramp scan.
 """
 from __future__ import annotations
 
@@ -54,7 +54,7 @@ def one(job: tuple[str, str, str, bool]) -> dict:
     sid, config, start, with_drift = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, lp_guess, tilt
+    from dem.protocols import TiltProtocol, tilt
     from dem.settings import NO_SLIDING_MU, Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
@@ -65,12 +65,9 @@ def one(job: tuple[str, str, str, bool]) -> dict:
     lp_ref = solve_lp(asm, 0.577, 1.0)
     t0 = time.perf_counter()
 
-    def proto(settings):
-        return TiltProtocol(guess=lp_guess(asm, settings)) if start == "lp" else TiltProtocol()
-
-    s_ns = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)
-    ns = tilt(m, s_ns, proto(s_ns), label=sid)
-    ref = tilt(m, Settings(), proto(Settings()), label=sid)
+    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), TiltProtocol(start=start), label=sid,
+              assembly=asm)
+    ref = tilt(m, Settings(), TiltProtocol(start=start), label=sid, assembly=asm)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config) if with_drift else float("nan")

@@ -60,14 +60,14 @@ SYNTHETIC_CASE = "dem.friction_map:synthetic_case"
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
 # Default protocol of a map tilt: hold-and-bisect to MAP_TILT_TOL, first bracket around the static
-# LP of the same blocks at the case's friction ("guess": "lp", see _case_setup): 4 simulations per
+# LP of the same blocks at the case's friction ("start": "lp", dem.protocols.tilt): 4 simulations per
 # tilt instead of 7. The 0.5 % tilt test proper keeps the ramp-scan start: it is validated against
 # that LP, and near the threshold PyBullet's outcome is not monotonic in lambda, so a bracket seeded
 # at the LP samples the noisy band near the LP (benchmarks/validate_dem.py, same machine and code,
 # measured with the former dt 1 ms / 200 iteration defaults and not repeated at the current ones:
 # LP start 4 of 22 cases beyond 3 %, mean |error| 2.0 %, hinge layouts 16 of 22; scan start 8 of
 # 22, 2.5 %, 18 of 22). The map's output is the mode and mu*, where the saving matters.
-MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "guess": "lp"}
+MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp"}
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)
 LP_REL_TOL = 1e-6  # lambda_LP(mu) counts as the no-sliding value within this relative tolerance
@@ -176,7 +176,7 @@ def _scaled_protocol(d: dict, s: float):
     unknown = set(d) - names
     if unknown:
         raise ArchdemInputError(f"unknown tilt protocol fields: {sorted(unknown)}")
-    p = TiltProtocol(**{k: v for k, v in d.items() if not (k == "guess" and v == "lp")})
+    p = TiltProtocol(**d)
     kw = {}
     for k in ("ramp_time", "hold_time", "stair_hold"):
         if k in names:
@@ -198,22 +198,15 @@ def _scaled_settings(case: dict):
     return Settings(mu_joint=case["mu_joint"], mu_base=case["mu_base"], **kw)
 
 
-def _case_setup(case: dict, with_guess: bool = True):
-    """Model, settings and protocol of a DEM tilt case. A protocol with ``"guess": "lp"`` starts
-    its bracket at the static LP of the same blocks (:func:`dem.protocols.lp_guess`), solved
-    only ``with_guess`` (a replay of one level does not bracket)."""
-    from dataclasses import replace
-
+def _case_setup(case: dict):
+    """Assembly, model, settings and protocol of a DEM tilt case."""
     from dem.model import from_assembly
-    from dem.protocols import lp_guess
     from specimens.blocks import discretise
 
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
     settings = _scaled_settings(case)
     proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
-    if with_guess and proto.kind == "hold" and case["protocol"].get("guess") == "lp":
-        proto = replace(proto, guess=lp_guess(asm, settings))
-    return from_assembly(asm, name=case["label"]), settings, proto
+    return asm, from_assembly(asm, name=case["label"]), settings, proto
 
 
 # ----------------------------------------------------------------------------- case functions
@@ -226,8 +219,8 @@ def tilt_case(case: dict) -> dict:
     """
     from dem.protocols import tilt
 
-    model, settings, proto = _case_setup(case)
-    res = tilt(model, settings, proto, label=case["label"])
+    asm, model, settings, proto = _case_setup(case)
+    res = tilt(model, settings, proto, label=case["label"], assembly=asm)
     joints = [j.to_dict() if hasattr(j, "to_dict") else dict(j) for j in res.joints]
     fw = res.collapse.history.friction_work if getattr(res, "collapse", None) is not None else float("nan")
     return {
@@ -252,7 +245,7 @@ def replay_tilt(case: dict, results: dict):
     from dem.protocols import TiltResult, hold_level
     from dem.provenance import run_provenance
 
-    model, settings, proto = _case_setup(case, with_guess=False)
+    _, model, settings, proto = _case_setup(case)
     if proto.kind != "hold":
         raise ArchdemInputError(f"only hold-protocol tilt cases can be replayed, not {proto.kind!r}")
     lo, hi = (float(x) for x in results["bracket"])

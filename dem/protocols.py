@@ -8,9 +8,9 @@ with a :class:`dem.load.GroundShake` load.
 Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horizontal part +x):
 
 * ``hold`` (default): a level lambda is reached by a smooth 1 s ramp and held ``hold_time``;
-  the threshold is bracketed (around ``guess``, the discrete LP of the same blocks where the
-  caller has it, :func:`lp_guess`; otherwise a fast continuous ramp gives the first estimate) and bisected
-  until the bracket is narrower than ``tol`` relative. The answer is the upper end of the
+  the threshold is bracketed around a first estimate (``guess`` if given; with ``start="lp"``
+  the static LP of the same blocks, :func:`lp_guess`; by default a fast continuous ramp) and
+  bisected until the bracket is narrower than ``tol`` relative. The answer is the upper end of the
   bracket (first collapsing level); non-monotonic outcomes near the threshold (spec 04) make
   thresholds reproducible to about +-1 %.
 * ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time;
@@ -226,7 +226,9 @@ class TiltProtocol:
     stair_hold: float = 0.5  # staircase: hold per step [s]
     rate: float = 0.02  # ramp: d lambda / dt [1/s]
     lam_max: float = 3.0  # give up above this lambda
-    guess: float | None = None  # hold: first estimate of lambda (lp_guess); None: a continuous ramp at scan_rate
+    guess: float | None = None  # hold: first estimate of lambda; None: found as ``start`` says
+    start: str = "scan"  # hold, without a guess: "scan" (a continuous ramp at scan_rate) or "lp" (the
+    #   static LP of the same blocks at the run's friction, lp_guess; tilt() needs the assembly)
 
     def __post_init__(self) -> None:
         if self.kind not in ("hold", "staircase", "ramp"):
@@ -237,6 +239,8 @@ class TiltProtocol:
                 raise ArchdemInputError(f"tilt protocol {k} must be > 0, got {v!r}")
         if self.guess is not None and not (math.isfinite(self.guess) and 0 < self.guess < self.lam_max):
             raise ArchdemInputError(f"tilt protocol guess must be in (0, lam_max), got {self.guess!r}")
+        if self.start not in ("scan", "lp"):
+            raise ArchdemInputError(f"tilt protocol start must be scan or lp, got {self.start!r}")
 
 
 @dataclass
@@ -315,11 +319,17 @@ def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float
 
 
 def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol | None = None,
-         label: str | None = None) -> TiltResult:
-    """Tilt test of ``model`` (see module docstring)."""
+         label: str | None = None, assembly=None) -> TiltResult:
+    """Tilt test of ``model`` (see module docstring). ``assembly``: the :mod:`specimens.blocks`
+    assembly ``model`` was built from, needed only by a hold protocol with ``start="lp"`` (the
+    resolved estimate is stored as the result's ``protocol.guess``)."""
     settings = settings or Settings()
     proto = protocol or TiltProtocol()
     wall0 = time.perf_counter()
+    if proto.kind == "hold" and proto.guess is None and proto.start == "lp":
+        if assembly is None:
+            raise ValueError("a tilt protocol with start='lp' needs the assembly of the model")
+        proto = replace(proto, guess=lp_guess(assembly, settings))  # None (no LP): the ramp scan
     levels: list[tuple[float, bool]] = []
     collapse = stable = None
     if proto.kind == "hold":

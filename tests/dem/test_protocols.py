@@ -1,5 +1,6 @@
 """The staircase and continuous-ramp tilt protocols against the closed form of a single block
-(spec §3.4.1): the same two cases the hold-and-bisect protocol passes in test_engines_shared."""
+(spec §3.4.1): the same two cases the hold-and-bisect protocol passes in test_engines_shared;
+the hold protocol's LP start (its first bracket around the static LP of the same blocks)."""
 import functools
 
 import pytest
@@ -50,3 +51,37 @@ def test_ramp_rate_insensitivity():
     # spec §3.2: halving the ramp rate changes lambda by < 2 %
     fast, slow = _run("rock", "ramp", 0.01), _run("rock", "ramp", 0.005)
     assert abs(fast.lam - slow.lam) / slow.lam < 0.02
+
+
+def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
+    # the LP start resolves the estimate from the assembly tilt() is given, stores it as the
+    # result's protocol.guess and simulates GUESS_BRACKET x LP first; the held levels are faked
+    # (collapse above a known threshold) so that only the bracketing logic runs
+    from types import SimpleNamespace
+
+    import dem.protocols as pr
+    from dem.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+    from specimens.errors import ArchdemInputError
+
+    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
+    model, settings = from_assembly(asm), Settings()
+    lp = pr.lp_guess(asm, settings)
+    truth = 0.97 * lp
+    levels = []
+
+    def fake_hold(model, settings, proto, lam):
+        levels.append(lam)
+        return SimpleNamespace(collapsed=lam > truth, mode="rocking", joints=[])
+
+    monkeypatch.setattr(pr, "hold_level", fake_hold)
+    proto = TiltProtocol(start="lp", tol=0.005)
+    with pytest.raises(ValueError, match="assembly"):
+        tilt(model, settings, proto)
+    r = tilt(model, settings, proto, assembly=asm)
+    assert r.protocol.guess == lp and r.protocol.start == "lp"
+    assert levels[:2] == [pr.GUESS_BRACKET[1] * lp, pr.GUESS_BRACKET[0] * lp]
+    assert r.bracket[0] <= truth < r.bracket[1] and r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
+    with pytest.raises(ArchdemInputError, match="start"):
+        TiltProtocol(start="guess")
