@@ -237,7 +237,9 @@ class TiltProtocol:
             v = getattr(self, k)
             if not (math.isfinite(v) and v > 0):
                 raise ArchdemInputError(f"tilt protocol {k} must be > 0, got {v!r}")
-        if self.guess is not None and not (math.isfinite(self.guess) and 0 < self.guess < self.lam_max):
+        # a number or None (a non-number, e.g. the former "lp" sentinel of stored map cases, is an input error)
+        if self.guess is not None and not (isinstance(self.guess, (int, float)) and not isinstance(self.guess, bool)
+                                           and math.isfinite(self.guess) and 0 < self.guess < self.lam_max):
             raise ArchdemInputError(f"tilt protocol guess must be in (0, lam_max), got {self.guess!r}")
         if self.start not in ("scan", "lp"):
             raise ArchdemInputError(f"tilt protocol start must be scan or lp, got {self.start!r}")

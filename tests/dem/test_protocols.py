@@ -85,3 +85,5 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
     assert r.bracket[0] <= truth < r.bracket[1] and r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
     with pytest.raises(ArchdemInputError, match="start"):
         TiltProtocol(start="guess")
+    with pytest.raises(ArchdemInputError, match="guess"):  # the former sentinel: a clear error, not a TypeError
+        TiltProtocol(guess="lp")
