@@ -5,8 +5,12 @@ import warnings
 
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
-            contact_fraction: float = 1.0, min_spacing: float = 0.0, disc_kw: dict | None = None) -> dict:
-    """All analytic multipliers of one arch as a JSON-ready dict."""
+            contact_fraction: float = 1.0, min_spacing: float = 0.0, disc_kw: dict | None = None,
+            continuous=None) -> dict:
+    """All analytic multipliers of one arch as a JSON-ready dict. ``continuous``: the arch's
+    :func:`analytic.limit_continuous.continuous_collapse` result at the same density, spacing
+    and thickness if the caller has it (e.g. the ``"continuous"`` of a :func:`multiplier_series`
+    row); solved here otherwise (about 1 s)."""
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
@@ -14,10 +18,20 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
 
     kw = dict(disc_kw or {})
     density = kw.get("density", 500.0)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        cont = continuous_collapse(arch, density=density, min_spacing=min_spacing,
-                                   effective_thickness=effective_thickness)
+    if continuous is not None:
+        want = (float(effective_thickness), float(min_spacing))
+        if (continuous.effective_thickness, continuous.min_spacing) != want:
+            raise ValueError(f"continuous result at (thickness, spacing) "
+                             f"{(continuous.effective_thickness, continuous.min_spacing)} != {want}")
+        cont = continuous
+        # the warning continuous_collapse raised when it solved it, rebuilt from the result
+        caught_msgs = [] if cont.converged else [f"continuous_collapse: {cont.message}"]
+    else:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            cont = continuous_collapse(arch, density=density, min_spacing=min_spacing,
+                                       effective_thickness=effective_thickness)
+        caught_msgs = [str(w.message) for w in caught]
     asm = discretise(arch, config=config, **kw)
     kin = enumerate_mechanisms(asm, contact_fraction=contact_fraction)
     lp = solve_lp(asm, mu_joint, mu_base, contact_fraction=contact_fraction)
@@ -31,7 +45,7 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
                                "cut_coordinate": float(u)}
                               for h, u in zip(cont.hinges, cont.u)] if cont.layout else [],
         "continuous_converged": cont.converged, "continuous_message": cont.message,
-        "warnings": [str(w.message) for w in caught],
+        "warnings": caught_msgs,
         "lambda_discrete": kin.lam,
         "hinges_discrete": [{"joint": j, "face": f} for j, f in kin.hinges],
         "lambda_lp": lp.lam, "lp_status": lp.message,
@@ -54,12 +68,14 @@ def _series_row(arch_spec) -> dict:
     c8 = continuous_collapse(a, effective_thickness=0.8)
     return dict(id=arch_spec.id, Sh=round(a.Sh, 6), Sd=round(a.Sd, 6), Rc=a.Rc, cont=c.lam, cont08=c8.lam,
                 disc=enumerate_mechanisms(discretise(a, config="glued")).lam, two_bar=lambda_two_bar(a),
-                polar=c.polar_angles(a))
+                polar=c.polar_angles(a), continuous=c)
 
 
 def multiplier_series(specimens) -> list[dict]:
     """Per specimen (objects with ``.id`` and ``.arch``), in order: continuous lambda at full and
-    80 % thickness, discrete (glued) and two-bar lambda, continuous hinge polar angles. Computed
+    80 % thickness, discrete (glued) and two-bar lambda, continuous hinge polar angles, and the
+    full-thickness :func:`~analytic.limit_continuous.continuous_collapse` result itself
+    (``"continuous"``, density 500 kg/m^3, no least spacing) for :func:`analyse`. Computed
     on all cores (about 1 s per arch)."""
     import os
     from concurrent.futures import ProcessPoolExecutor

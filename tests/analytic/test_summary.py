@@ -15,3 +15,22 @@ def test_parallel_series_equals_serial():
         for k in ("cont", "cont08", "disc", "two_bar"):
             assert a[k] == b[k]  # same computation, bit for bit
         assert np.array_equal(np.asarray(a["polar"]), np.asarray(b["polar"]))
+
+
+def test_analyse_with_the_series_continuous_result_equals_solving_it():
+    """The campaign hands each specimen's series result to ``analyse`` instead of solving the
+    profile twice: the answer must be the one ``analyse`` computes itself."""
+    from analytic.summary import analyse
+
+    s = get_specimen("Sh06-Sd015")
+    row = _series_row(s)
+    own = analyse(s.arch, "glued", 0.577, 1.0)
+    reused = analyse(s.arch, "glued", 0.577, 1.0, continuous=row["continuous"])
+    assert reused == own
+    # a result at another thickness is not the one asked for
+    import pytest
+
+    from analytic.limit_continuous import continuous_collapse
+
+    with pytest.raises(ValueError, match="thickness"):
+        analyse(s.arch, "glued", 0.577, 1.0, continuous=continuous_collapse(s.arch, effective_thickness=0.8))
