@@ -69,11 +69,46 @@ UNIT_CORE_S = {
     ("record", False): 255.0,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
+# Wall seconds per simulated second that :func:`machine_speed` reads on the machine of UNIT_CORE_S
+# (5 calls on an idle 2-core machine: PyBullet 1.80-2.09, median 1.93; MuJoCo 1.15-1.31, median 1.24;
+# a `make demo` there took 30 core-s per quick tilt test against the 34 above). The estimate scales
+# the unit costs by this machine's own reading over these, so it holds on a faster machine too.
+REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25}
+CALIBRATION_SPECIMEN = "Sh06-Sd015"
 
 
-def estimate(ctx: CampaignContext, steps: list[str]) -> dict[str, dict]:
+def machine_speed(engine: str = "pybullet", steps: int = 200, repeats: int = 3) -> float:
+    """Wall seconds per simulated second of this machine for ``engine``: the glued
+    CALIBRATION_SPECIMEN at rest with the default settings, the median of ``repeats`` runs of
+    ``steps`` steps after the build (about 1.5 s of wall time with PyBullet on a 2-core machine)."""
+    import statistics
+    import time
+
+    from dem.engines import get_engine
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    settings = Settings(engine=engine)
+    model = from_assembly(discretise(get_specimen(CALIBRATION_SPECIMEN).arch, config="glued"),
+                          name=CALIBRATION_SPECIMEN)
+    walls = []
+    with get_engine(engine) as eng:
+        eng.build(model, settings)
+        eng.step(20)  # contacts found and warm-started before timing
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            eng.step(steps)
+            walls.append(time.perf_counter() - t0)
+    return statistics.median(walls) / (steps * settings.dt)
+
+
+def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None) -> dict[str, dict]:
     """Per simulator step in ``steps``: number of units (tilt tests, map cases, thresholds) and
-    estimated wall time [s] on ``ctx.workers`` cores (all cores by default)."""
+    estimated wall time [s] on ``ctx.workers`` cores (all cores by default). ``speed``: this
+    machine's :func:`machine_speed` for ``ctx.engine``; the unit costs are scaled by it over
+    REFERENCE_SPEED (None: the reference machine's costs as they are)."""
     import os
 
     from dem.friction_map import parse_mu_grid
@@ -87,11 +122,13 @@ def estimate(ctx: CampaignContext, steps: list[str]) -> dict[str, dict]:
         "shake": (len(shake_specs) * len(freqs), "sine-pulse thresholds"),
         "record": (len(_record_plan(ctx)), "record thresholds"),
     }
+    ref = REFERENCE_SPEED.get(ctx.engine)
+    scale = speed / ref if speed is not None and ref else 1.0
     out = {}
     for name in (s for s in steps if s in units):
         n, what = units[name]
         # units (or, for thresholds, the simulations inside one unit) run in parallel on the cores
-        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(ctx.engine, 1.0)
+        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(ctx.engine, 1.0) * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
     return out
 

@@ -26,14 +26,18 @@ def _campaign(args: argparse.Namespace) -> int:
             from specimens.errors import ArchdemInputError
 
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(STEPS)}")
-    from dem.campaign_dem import estimate
+    from dem.campaign_dem import REFERENCE_SPEED, estimate, machine_speed
 
-    est = estimate(ctx, steps or list(all_steps()))
-    if est:
+    steps_run = steps or list(all_steps())
+    if estimate(ctx, steps_run):  # simulator steps ahead: time this machine (about 1 s), then estimate
+        speed = machine_speed(ctx.engine)
+        est = estimate(ctx, steps_run, speed=speed)
         total = sum(e["wall_s"] for e in est.values())
         parts = "; ".join(f"{k}: {e['units']} {e['what']}" for k, e in est.items())
         print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine}: {parts}; estimated "
-              f"{_duration(total)} of simulation (steps already finished in {out} are kept)", flush=True)
+              f"{_duration(total)} of simulation at this machine's {speed:.2f} s per simulated second "
+              f"(the unit costs were measured at {REFERENCE_SPEED[ctx.engine]:.2f}; steps already finished "
+              f"in {out} are kept)", flush=True)
     manifest = run_campaign(ctx, steps)
     print(f"campaign finished in {time.perf_counter() - t0:.1f} s; results in {out}")
     report = manifest.get("report")

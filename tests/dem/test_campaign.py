@@ -28,3 +28,24 @@ def test_estimate_counts_the_work_of_each_step(quick, units, tmp_path):
 def test_estimate_only_for_requested_simulator_steps(tmp_path):
     ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=True, workers=2)
     assert set(estimate(ctx, ["catalogue", "analytic", "tilt"])) == {"tilt"}
+
+
+def test_estimate_scales_with_the_measured_machine_speed(tmp_path):
+    """A machine twice as slow per simulated second as the reference gets twice the estimate."""
+    from dem.campaign_dem import REFERENCE_SPEED
+
+    ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=True, workers=2)
+    base = estimate(ctx, list(all_steps()))
+    same = estimate(ctx, list(all_steps()), speed=REFERENCE_SPEED["pybullet"])
+    slow = estimate(ctx, list(all_steps()), speed=2 * REFERENCE_SPEED["pybullet"])
+    for k in base:
+        assert same[k]["wall_s"] == pytest.approx(base[k]["wall_s"])
+        assert slow[k]["wall_s"] == pytest.approx(2 * base[k]["wall_s"])
+
+
+@pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
+def test_machine_speed_times_the_engine_it_is_given(engine):
+    from dem.campaign_dem import machine_speed
+
+    s = machine_speed(engine, steps=20, repeats=1)
+    assert 0 < s < 1e3  # wall seconds per simulated second: positive and finite
