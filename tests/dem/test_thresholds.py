@@ -57,6 +57,39 @@ def test_threshold_finds_lowest_edge_of_non_monotonic_outcome(monkeypatch):
     assert nxt["edge_bracket_g"][0] < 0.9 <= nxt["edge_bracket_g"][1]
 
 
+# stand-ins for the simulator that worker processes can import: the pulse "frequency" picks the truth
+_TRUTHS = {
+    1.0: lambda a: (0.45 <= a < 0.78) or a >= 0.9,  # threshold inside the scan, a survival window above
+    2.0: lambda a: a >= 1.37,  # threshold near the top of the scan
+    3.0: lambda a: a >= 0.26,  # the lowest amplitude collapses: step down below the scan
+    4.0: lambda a: False,  # nothing collapses
+}
+
+
+def _fake_run(args):
+    import time
+
+    a, f = args[4], args[5]
+    c = _TRUTHS[f](a)
+    time.sleep(0.01 if c else 0.03)  # survivals run longer than collapses, as in the simulator
+    return Outcome(float(a), c, "rocking" if c else "none", None)
+
+
+@pytest.mark.parametrize("freq", sorted(_TRUTHS))
+def test_threshold_same_runs_with_one_and_two_processes(monkeypatch, freq):
+    """With two processes the bisection overlaps the rest of the scan; it must make exactly the
+    runs of the serial search (same amplitudes, same order in the result) and give its answer."""
+    monkeypatch.setattr(thresholds, "_run_one", _fake_run)
+    kw = dict(a_min_g=0.3, a_max_g=1.5, scan_ratio=1.1, tol=0.01)
+    one = threshold(single_block(0.1, 0.4), freq, **kw, workers=1)
+    two = threshold(single_block(0.1, 0.4), freq, **kw, workers=2)
+    assert two.runs == one.runs
+    assert (two.amplitude_g, two.bracket_g, two.bands) == (one.amplitude_g, one.bracket_g, one.bands)
+    if freq == 1.0:
+        lo, hi = two.bracket_g
+        assert lo < 0.45 <= hi and hi / lo - 1 <= 0.01
+
+
 def test_block_threshold_scan_and_bisection():
     """Full search on the single block at 3 Hz (planar, no sliding, two processes): the answer lies
     within 10 % of the analytic rocking-block threshold 0.3602 g (see test_shake for the tolerance),
