@@ -6,9 +6,11 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
 (0.577 / 1.0) against the no-sliding value. Writes benchmarks/results/validate_dem.json and .md.
 
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start scan|lp]
+                                      [--hold-time S]
 
 ``--start lp`` starts each hold-and-bisect at the static LP of the same blocks at the run's
-friction (``TiltProtocol(start="lp")``, the map's start) instead of the ramp scan.
+friction (``TiltProtocol(start="lp")``, the map's start) instead of the ramp scan;
+``--hold-time`` sets how long each level is held (default: the protocol's).
 """
 from __future__ import annotations
 
@@ -50,8 +52,8 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool]) -> dict:
-    sid, config, start, with_drift = job
+def one(job: tuple[str, str, str, bool, float | None]) -> dict:
+    sid, config, start, with_drift, hold = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -65,14 +67,14 @@ def one(job: tuple[str, str, str, bool]) -> dict:
     lp_ref = solve_lp(asm, 0.577, 1.0)
     t0 = time.perf_counter()
 
-    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), TiltProtocol(start=start), label=sid,
-              assembly=asm)
-    ref = tilt(m, Settings(), TiltProtocol(start=start), label=sid, assembly=asm)
+    proto = TiltProtocol(start=start) if hold is None else TiltProtocol(start=start, hold_time=hold)
+    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), proto, label=sid, assembly=asm)
+    ref = tilt(m, Settings(), proto, label=sid, assembly=asm)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config) if with_drift else float("nan")
     return {
-        "id": sid, "config": config, "start": start, "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
+        "id": sid, "config": config, "start": start, "hold_time": proto.hold_time, "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
         "dem_hinges_lambda": lam_h, "mode_nosliding": ns.mode,
@@ -112,6 +114,7 @@ def main() -> None:
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--sensitivity", action="store_true", help="only the dt / ramp-rate insensitivity check")
     ap.add_argument("--start", choices=("scan", "lp"), default="scan", help="first bracket: ramp scan or static LP")
+    ap.add_argument("--hold-time", dest="hold", type=float, default=None, help="hold per level [s] (default: protocol's)")
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     a = ap.parse_args()
     if a.sensitivity:
@@ -124,8 +127,8 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift) for c in a.configs.split(",") for s in ids]
-    stem = "validate_dem" if a.start == "scan" else "validate_dem_lp_start"
+    jobs = [(s, c, a.start, a.drift, a.hold) for c in a.configs.split(",") for s in ids]
+    stem = ("validate_dem" if a.start == "scan" else "validate_dem_lp_start") + (f"_hold{a.hold:g}" if a.hold else "")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))

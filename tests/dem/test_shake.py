@@ -100,3 +100,14 @@ def test_run_file_roundtrip(block, tmp_path):
     assert d["sim"].history.pos.shape == res.sim.history.pos.shape
     with pytest.raises(Exception):
         save_shake(res, p)  # never overwritten
+
+
+def test_skipping_the_friction_readout_leaves_the_run_unchanged(block):
+    """Threshold scans skip the contact-force readout of the friction work: it only reads the
+    engine, so the run itself (poses, outcome) must be the same step for step."""
+    proto = ShakeProtocol(tail=0.25)
+    a = shake(block, SinePulse(0.5 * G, 4.0), SETTINGS, proto)
+    b = shake(block, SinePulse(0.5 * G, 4.0), SETTINGS, proto, friction_work=False)
+    assert math.isfinite(a.sim.history.friction_work) and math.isnan(b.sim.history.friction_work)
+    assert (a.collapsed, a.mode) == (b.collapsed, b.mode)
+    np.testing.assert_array_equal(a.sim.history.pos, b.sim.history.pos)
