@@ -68,14 +68,29 @@ def one(job: tuple[str, str, str, bool, float | None]) -> dict:
     t0 = time.perf_counter()
 
     proto = TiltProtocol(start=start) if hold is None else TiltProtocol(start=start, hold_time=hold)
-    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), proto, label=sid, assembly=asm)
+    # every held level of the no-sliding test: (lambda / LP, collapsed, time into the hold at collapse [s]);
+    # with no sliding the LP is the exact threshold, so a collapse below it is spurious
+    import dem.protocols as protocols
+
+    levels, hold_level = [], protocols.hold_level
+
+    def logged(model, settings, p, lam):
+        r = hold_level(model, settings, p, lam)
+        levels.append((lam / lp.lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None))
+        return r
+
+    protocols.hold_level = logged
+    try:
+        ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), proto, label=sid, assembly=asm)
+    finally:
+        protocols.hold_level = hold_level
     ref = tilt(m, Settings(), proto, label=sid, assembly=asm)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config) if with_drift else float("nan")
     return {
         "id": sid, "config": config, "start": start, "hold_time": proto.hold_time, "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
-        "dem_lambda_nosliding": ns.lam, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
+        "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
         "dem_hinges_lambda": lam_h, "mode_nosliding": ns.mode,
         "dem_lambda_ref": ref.lam, "mode_ref": ref.mode, "lp_lambda_ref_associative": lp_ref.lam,
@@ -147,6 +162,11 @@ def main() -> None:
                  f"within 2 % {int(np.sum(err <= 0.02))}/{len(rows)}, hinges {sum(r['hinges_match'] for r in rows)}/{len(rows)}, "
                  f"ref <= ns + 1 % {sum(r['ref_le_nosliding_plus_1pc'] for r in rows)}/{len(rows)}, simulations "
                  f"{sum(r['n_sims_nosliding'] + r['n_sims_ref'] for r in rows)}, wall {time.perf_counter() - t0:.0f} s")
+    col = [(f, t) for r in rows for f, c, t in r["levels_nosliding"] if c]
+    up = [t for f, t in col if f >= 1.0]
+    late = sorted((round(t, 2), round(f, 4)) for f, t in col if t > max(up or [0.0]))  # after every genuine one
+    lines.append(f"no-sliding held levels: {len(up)} collapses at or above the LP, within {max(up or [float('nan')]):.2f} s "
+                 f"of the hold; {len(col) - len(up)} below it (spurious); late collapses (s into the hold, lambda/LP): {late}")
     (OUT / f"{stem}.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 

@@ -155,6 +155,8 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     :class:`dem.settings.Settings` fields at the catalogue scale; the time scale is applied
     by the case function.
     """
+    from dem.protocols import TiltProtocol
+
     if config not in ("glued", "free"):
         raise ArchdemInputError(f"configuration must be 'glued' or 'free', got {config!r}")
     for nm, v in (("mu_joint", mu_joint), ("mu_base", mu_base)):
@@ -163,7 +165,8 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     return {
         "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
-        "protocol": dict(protocol if protocol is not None else MAP_PROTOCOL),
+        # the hold time is written out so that a study made with another default is not resumed into
+        "protocol": {"hold_time": TiltProtocol().hold_time, **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),
     }

@@ -7,7 +7,7 @@ with a :class:`dem.load.GroundShake` load.
 
 Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horizontal part +x):
 
-* ``hold`` (default): a level lambda is reached by a smooth 1 s ramp and held ``hold_time``;
+* ``hold`` (default): a level lambda is reached by a smooth 1 s ramp and held ``hold_time`` (1 s);
   the threshold is bracketed around a first estimate (``guess`` if given; with ``start="lp"``
   the static LP of the same blocks, :func:`lp_guess`; by default a fast continuous ramp) and
   bisected until the bracket is narrower than ``tol`` relative. The answer is the upper end of the
@@ -218,7 +218,16 @@ class TiltProtocol:
 
     kind: str = "hold"  # hold | staircase | ramp
     ramp_time: float = 1.0  # hold: smooth ramp to each level [s]
-    hold_time: float = 2.0  # hold: time held at the level [s]
+    hold_time: float = 1.0  # hold: time held at the level [s]. Measured (benchmarks/validate_dem.py
+    #   --start lp, 22 cases, no sliding, 2 s held, every level logged): the 30 levels at or above the
+    #   LP (the exact threshold with no sliding) collapsed within 0.43 s of the hold (0.27-0.43 s at
+    #   +0.25 %, 0.28 s at most at +1 %); the 6 that collapsed later than 1 s (1.08-1.66 s) were all
+    #   below the LP (0.969-0.999 x), spurious collapses of a structure that stands, set off by solver
+    #   chatter at rest near the threshold. Held 1 s, LP start: no-sliding error vs LP -3.88 to +0.25 %
+    #   (20 of 22 within 3 %, against 19 held 2 s) in 19 % less wall time; ramp-scan start (the
+    #   default): -2.36 to +0.14 % and free Sh1-Sd025 -7.24 % (21 of 22, against 20), reference
+    #   friction <= no-sliding + 1 % on 22 of 22 (against 21). A level less than ~0.1 % above the
+    #   threshold may need longer than 1 s and read as stable (+0.25 % on Sh1-Sd020/25 glued, LP start)
     tol: float = 0.005  # hold: relative bracket width at which bisection stops
     scan_rate: float = 0.25  # hold: rate of the first-estimate ramp [1/s]
     max_sims: int = 30
@@ -288,10 +297,11 @@ class TiltResult:
 
 
 # First bracket of the hold protocol around an analytic estimate, relative to it. With the
-# defaults (dt 0.5 ms, 100 iterations; benchmarks/validate_dem.py, 22 cases, ramp-scan start) the
-# DEM lambda lies -3.0 % to +0.14 % from the discrete LP with no sliding (one outlier, free
-# Sh1-Sd025, -7.2 %: creep along the LP mechanism) and -2.6 % to -0.07 % from the associative LP
-# at the reference friction, so (0.95, 1.01) holds both ends on 21 of 22; an end that turns out
+# defaults (dt 0.5 ms, 100 iterations, held 1 s; benchmarks/validate_dem.py --start lp, 22 cases)
+# the DEM lambda lies -3.9 % to +0.25 % from the discrete LP with no sliding and -2.4 % to +0.25 %
+# from the associative LP at the reference friction (ramp-scan start: -2.4 % to +0.14 %, one
+# outlier, free Sh1-Sd025, -7.2 %: creep along the LP mechanism; -2.1 % to 0.0 %), so (0.95, 1.01)
+# holds both ends on all of them; an end that turns out
 # wrong is moved outward (GUESS_STEPS) at the cost of one simulation each time. Both ends of the
 # final bracket are simulated, but near the threshold PyBullet's outcome is not monotonic in
 # lambda (Sh06-Sd010 glued, no sliding, former dt 1 ms defaults, held 4 s: 0.932 and 0.95 x LP

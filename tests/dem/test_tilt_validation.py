@@ -26,8 +26,8 @@ def case():
 def test_no_sliding_lambda_and_hinges_match_lp(case):
     asm, m, ns = case
     lp = lim.solve_lp(asm, float("inf"), float("inf"))
-    # the tolerance: 3 % (PyBullet's measured bias: 3.0 % low to 0.1 % high with the defaults,
-    # 20 of 22 catalogue cases within 3 %, see dem/settings.py)
+    # the tolerance: 3 % (PyBullet's measured bias: 2.4 % low to 0.1 % high with the defaults,
+    # 21 of 22 catalogue cases within 3 %, see dem/settings.py)
     assert abs(ns.lam - lp.lam) / lp.lam <= 0.03
     hinges = tuple((j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide"))
     # the LP layout, or another four-hinge mechanism within 0.5 % of the LP lambda (the rule:
@@ -39,13 +39,11 @@ def test_no_sliding_lambda_and_hinges_match_lp(case):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason=(
-    "known failure of the issue's check on this specimen with the dt 0.5 ms / 100 iteration defaults: "
-    "reference 0.3498 vs no-sliding 0.3456 (+1.2 %); the no-sliding threshold lands 1.6 % below the LP "
-    "(non-monotonic near the bracket). Full validation: 21 of 22 cases pass, this is the one that fails"))
 def test_reference_friction_not_above_no_sliding(case):
-    # spec §3.4.4; 1 % = the reproducibility of thresholds measured near the bracket. Kept at the
-    # issue's 1 % (not widened): the failure is reported, not tuned away.
+    # spec §3.4.4; 1 % = the reproducibility of thresholds measured near the bracket. This specimen
+    # failed it with levels held 2 s (reference 0.3498 vs no-sliding 0.3456, a spurious collapse at
+    # rest 1.6 % below the LP after more than 1 s of hold); held 1 s (the default, measured in
+    # dem/protocols.py) it reads 0.3498 vs 0.3493, and 22 of 22 catalogue cases pass.
     asm, m, ns = case
     ref = tilt(m, Settings())
     assert ref.lam <= 1.01 * ns.lam
