@@ -53,25 +53,28 @@ def _record_plan(ctx: CampaignContext) -> list:
 
 
 # Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies, defaults dt 0.5 ms /
-# 100 iterations (wall of the step x 2 cores / units), measured on a 2-core machine stepping a glued
-# specimen at 2.6 s per simulated second: quick values from a `make demo` run, full values from the
-# full 11-specimen campaign (65.2 min: tilt 545 s for 22 tests, map 2167 s for 173 cases, shake
-# 787 s for 30 thresholds, record 382 s for 3), so the full estimate reproduces that run by
-# construction. Faster machines finish proportionally sooner.
+# 100 iterations, tilt levels held 1 s (wall of the step x 2 cores / units), measured on a 2-core
+# machine stepping a glued specimen at 2.6 s per simulated second (machine_speed 1.76-1.93).
+# Quick values: a quick campaign run (366 s: tilt 130 s for 11 tests, map 100 s for 10 cases,
+# shake 47 s for 2 thresholds, record 66 s for 1). Full values: the full campaign run with levels
+# held 2 s (65.2 min: tilt 545 s for 22 tests, map 2167 s for 173 cases, shake 787 s for 30
+# thresholds, record 382 s for 3), the tilt re-measured held 1 s (the 22 x 2 tilt tests of
+# benchmarks/validate_dem.py in 930 s), map, shake and record scaled by the quick run's measured
+# ratios to its former values (0.71, 0.94, 0.83) -- not re-measured on a full run.
 UNIT_CORE_S = {
-    ("tilt", True): 34.0,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 50.0,  # ... to 0.5 % from the ramp scan (9 simulations)
-    ("map", True): 28.0,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 25.0,
-    ("shake", True): 50.0,  # one threshold (scan + bisection) at one frequency, tol 2 %
-    ("shake", False): 52.0,  # ... ceiling 6 x lambda and tol 1 %
-    ("record", True): 160.0,  # one scaled-record threshold, 3 s window
-    ("record", False): 255.0,  # ... 7 s window, tol 1 %
+    ("tilt", True): 23.7,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
+    ("tilt", False): 42.3,  # ... to 0.5 % from the ramp scan (9 simulations)
+    ("map", True): 19.9,  # one map case (tilt to 2 %, LP-started bracket)
+    ("map", False): 17.8,
+    ("shake", True): 46.9,  # one threshold (scan + bisection) at one frequency, tol 2 %
+    ("shake", False): 48.9,  # ... ceiling 6 x lambda and tol 1 %
+    ("record", True): 132.6,  # one scaled-record threshold, 3 s window
+    ("record", False): 212.0,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
 # Wall seconds per simulated second that :func:`machine_speed` reads on the machine of UNIT_CORE_S
 # (5 calls on an idle 2-core machine: PyBullet 1.80-2.09, median 1.93; MuJoCo 1.15-1.31, median 1.24;
-# a `make demo` there took 30 core-s per quick tilt test against the 34 above). The estimate scales
+# 1.76 at the start of the quick run above). The estimate scales
 # the unit costs by this machine's own reading over these, so it holds on a faster machine too.
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25}
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
