@@ -94,8 +94,9 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
     cont_of = {r["id"]: (c.arch, r["continuous"]) for c, r in zip(CATALOGUE, series)}
     rows = []
     for s in ctx.specimens:
+        arch_c, cont = cont_of.get(s.id, (None, None))
         a = analyse(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE,
-                    continuous=cont_of[s.id][1] if cont_of.get(s.id, (None,))[0] == s.arch else None)
+                    continuous=cont if arch_c == s.arch else None)
         other = "free" if ctx.config == "glued" else "glued"
         lam_other = enumerate_mechanisms(discretise(s.arch, config=other)).lam
         lam80 = lam80_of[s.id] if s.id in lam80_of else continuous_collapse(s.arch, effective_thickness=0.8).lam

@@ -131,10 +131,11 @@ def _lowest_bracket(scan: list) -> int | None:
 
 
 def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
-                     max_sims: int) -> tuple[list[Outcome], list[Outcome]]:
+                     max_sims: int) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
     """Outcomes of the scan (in grid order) and of the bisection of its lowest survival ->
     collapse bracket (in order; geometric midpoints until ``hi / lo - 1 <= tol`` or ``max_sims``
-    runs in all; none when the lowest amplitude collapses or nothing does).
+    runs in all), and the final ``(lo, hi, run at hi)``; no bisection and None when the lowest
+    amplitude collapses or nothing does.
 
     With several ``workers`` the bisection starts as soon as the scan below its bracket is known
     and has priority on the next free process, while the rest of the scan fills the others: the
@@ -147,7 +148,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
     n = len(grid)
     scan: list[Outcome | None] = [None] * n
     bis: list[Outcome] = []
-    bracket: list[float] | None = None  # [lo, hi] of the bisection, once the scan below it is known
+    bracket: tuple | None = None  # (lo, hi, run at hi) of the bisection, once the scan below it is known
 
     def next_mid() -> float | None:
         nonlocal bracket
@@ -155,21 +156,23 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
             k = _lowest_bracket(scan)
             if k is None or k <= 0:
                 return None
-            bracket = [scan[k - 1].amplitude_g, scan[k].amplitude_g]
-        lo, hi = bracket
+            bracket = (scan[k - 1].amplitude_g, scan[k].amplitude_g, scan[k])
+        lo, hi, _ = bracket
         if hi / lo - 1 > tol and n + len(bis) < max_sims:
             return math.sqrt(lo * hi)
         return None
 
     def take(r: Outcome) -> None:
+        nonlocal bracket
         bis.append(r)
-        bracket[1 if r.collapsed else 0] = r.amplitude_g
+        lo, hi, hi_r = bracket
+        bracket = (lo, r.amplitude_g, r) if r.collapsed else (r.amplitude_g, hi, hi_r)
 
     if workers <= 1:
         scan = [_run_one(job(a)) for a in grid]
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
-        return scan, bis
+        return scan, bis, bracket
     with ProcessPoolExecutor(max_workers=min(workers, n)) as ex:
         running: dict = {}  # future -> scan index, or None for the bisection's run
         nxt = 0
@@ -184,7 +187,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
                 else:
                     break
             if not running:
-                return list(scan), bis
+                return list(scan), bis, bracket
             done, _ = wait(running, return_when=FIRST_COMPLETED)
             for f in done:
                 i = running.pop(f)
@@ -234,25 +237,17 @@ def threshold(model: Model, freq: float, settings: Settings | None = None, proto
     wall0 = time.perf_counter()
     grid = scan_grid(a_min_g, a_max_g, scan_ratio)
     job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
-    scan, bis = _scan_and_bisect(grid, job, workers, tol, max_sims)
+    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims)
     runs = scan + bis
-    ks = [k for k, r in enumerate(scan) if r.collapsed]
-    if not ks:
+    if not any(r.collapsed for r in scan):
         return ThresholdResult(float(freq), None, None, _bands(runs, None), tuple(runs), scan_ratio, tol,
                                time.perf_counter() - wall0)
-    k = ks[0]
-    hi_r = scan[k]
-    if k > 0:  # the lowest scan bracket was bisected alongside the scan
-        lo, hi = scan[k - 1].amplitude_g, hi_r.amplitude_g
-        for r in bis:
-            if r.collapsed:
-                hi, hi_r = r.amplitude_g, r
-            else:
-                lo = r.amplitude_g
+    if bracket is not None:  # the lowest scan bracket was bisected alongside the scan
+        lo, hi, hi_r = bracket
         return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs),
                                scan_ratio, tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase)
     # the lowest scanned amplitude collapses: step down until something survives, then bisect
-    lo_r = None
+    hi_r, lo_r = scan[0], None
     a = hi_r.amplitude_g
     for _ in range(6):
         a /= scan_ratio
