@@ -22,9 +22,10 @@ def _tilt(sid: str) -> dict:
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
-    m = from_assembly(discretise(get_specimen(sid).arch, config="glued"), name=sid)
+    asm = discretise(get_specimen(sid).arch, config="glued")
+    m = from_assembly(asm, name=sid)
     t0 = time.perf_counter()
-    r = tilt(m, Settings())
+    r = tilt(m, Settings(), assembly=asm)  # the default protocol: LP-started hold-and-bisect to 0.5 %
     return {"id": sid, "lambda": r.lam, "mode": r.mode, "n_sims": r.n_sims, "wall_s": time.perf_counter() - t0}
 
 

@@ -5,12 +5,13 @@ no sliding (mu = 10 everywhere) against the discrete LP, hinge joints against th
 a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the reference friction
 (0.577 / 1.0) against the no-sliding value. Writes benchmarks/results/validate_dem.json and .md.
 
-    python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start scan|lp]
-                                      [--hold-time S]
+    python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
+                                      [--hold-time S] [--ramp-time S]
 
-``--start lp`` starts each hold-and-bisect at the static LP of the same blocks at the run's
-friction (``TiltProtocol(start="lp")``, the map's start) instead of the ramp scan;
-``--hold-time`` sets how long each level is held (default: the protocol's).
+Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
+default protocol); ``--start scan`` starts it from the ramp scan instead;
+``--hold-time`` sets how long each level is held and ``--ramp-time`` how long the smooth ramp to
+it lasts (default: the protocol's).
 """
 from __future__ import annotations
 
@@ -52,8 +53,8 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool, float | None]) -> dict:
-    sid, config, start, with_drift, hold = job
+def one(job: tuple[str, str, str, bool, float | None, float | None]) -> dict:
+    sid, config, start, with_drift, hold, ramp = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -67,7 +68,8 @@ def one(job: tuple[str, str, str, bool, float | None]) -> dict:
     lp_ref = solve_lp(asm, 0.577, 1.0)
     t0 = time.perf_counter()
 
-    proto = TiltProtocol(start=start) if hold is None else TiltProtocol(start=start, hold_time=hold)
+    timing = {k: v for k, v in (("hold_time", hold), ("ramp_time", ramp)) if v is not None}
+    proto = TiltProtocol(start=start, **timing)
     # every held level of the no-sliding test: (lambda / LP, collapsed, time into the hold at collapse [s]);
     # with no sliding the LP is the exact threshold, so a collapse below it is spurious
     import dem.protocols as protocols
@@ -89,7 +91,8 @@ def one(job: tuple[str, str, str, bool, float | None]) -> dict:
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config) if with_drift else float("nan")
     return {
-        "id": sid, "config": config, "start": start, "hold_time": proto.hold_time, "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
+        "id": sid, "config": config, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
+        "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
         "dem_hinges_lambda": lam_h, "mode_nosliding": ns.mode,
@@ -109,14 +112,15 @@ def sensitivity(job: tuple[str, str]) -> dict:
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
-    m = from_assembly(discretise(get_specimen(sid).arch, config="glued"), name=sid)
+    asm = discretise(get_specimen(sid).arch, config="glued")
+    m = from_assembly(asm, name=sid)
     s = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)
     p = TiltProtocol()
     if variant == "dt/2":
         s = s.with_(dt=s.dt / 2)
     elif variant == "ramp rate/2":
         p = TiltProtocol(ramp_time=2 * p.ramp_time, hold_time=2 * p.hold_time)
-    r = tilt(m, s, p)
+    r = tilt(m, s, p, assembly=asm)
     return {"id": sid, "variant": variant, "lambda": r.lam, "bracket": list(r.bracket), "wall_s": r.wall_s}
 
 
@@ -128,8 +132,10 @@ def main() -> None:
     ap.add_argument("--configs", default="glued,free")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--sensitivity", action="store_true", help="only the dt / ramp-rate insensitivity check")
-    ap.add_argument("--start", choices=("scan", "lp"), default="scan", help="first bracket: ramp scan or static LP")
+    ap.add_argument("--start", choices=("scan", "lp"), default="lp", help="first bracket: static LP (default) or ramp scan")
     ap.add_argument("--hold-time", dest="hold", type=float, default=None, help="hold per level [s] (default: protocol's)")
+    ap.add_argument("--ramp-time", dest="ramp", type=float, default=None,
+                    help="smooth ramp to each level [s] (default: protocol's)")
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     a = ap.parse_args()
     if a.sensitivity:
@@ -142,8 +148,9 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift, a.hold) for c in a.configs.split(",") for s in ids]
-    stem = ("validate_dem" if a.start == "scan" else "validate_dem_lp_start") + (f"_hold{a.hold:g}" if a.hold else "")
+    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp) for c in a.configs.split(",") for s in ids]
+    stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
+        + (f"_ramp{a.ramp:g}" if a.ramp else "")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))

@@ -59,13 +59,15 @@ def _record_plan(ctx: CampaignContext) -> list:
 # shake 47 s for 2 thresholds, record 66 s for 1). Full values: the full campaign run with levels
 # held 2 s (65.2 min: tilt 545 s for 22 tests, map 2167 s for 173 cases, shake 787 s for 30
 # thresholds, record 382 s for 3), the tilt re-measured held 1 s (the 22 x 2 tilt tests of
-# benchmarks/validate_dem.py in 930 s), map, shake and record scaled by the quick run's measured
-# ratios to its former values (0.71, 0.94, 0.83) -- not re-measured on a full run.
+# benchmarks/validate_dem.py in 930 s), the map re-measured held 1 s (``archdem campaign --steps map``,
+# 176 cases in 1670 s), shake and record scaled by the quick run's measured ratios to its former
+# values (0.94, 0.83) -- not re-measured on a full run.
 UNIT_CORE_S = {
     ("tilt", True): 23.7,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 42.3,  # ... to 0.5 % from the ramp scan (9 simulations)
+    ("tilt", False): 35.2,  # ... to 0.5 %, LP-started (6 simulations): 42.3 measured with the ramp-scan
+    #   start (9) scaled by 488 / 587 s, the LP- and scan-started 44 tilt tests of validate_dem.py
     ("map", True): 19.9,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 17.8,
+    ("map", False): 19.0,
     ("shake", True): 46.9,  # one threshold (scan + bisection) at one frequency, tol 2 %
     ("shake", False): 48.9,  # ... ceiling 6 x lambda and tol 1 %
     ("record", True): 132.6,  # one scaled-record threshold, 3 s window
@@ -161,8 +163,9 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
 
     frictions = _tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
-    # quick: bisection to 2 % in lambda (the map's tolerance); full: 0.5 % (the tilt test's)
-    proto = None if ctx.quick else {"kind": "hold", "tol": 0.005}
+    # quick: bisection to 2 % in lambda (the map's tolerance); full: 0.5 % (the tilt test's); both
+    # LP-started, the tilt test's default
+    proto = None if ctx.quick else {"kind": "hold", "tol": 0.005, "start": "lp"}
     cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng)
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
     res = run_study(list(cases.values()), DEM_CASE, _studies(ctx) / "tilt.h5", workers=ctx.workers, resume=True,

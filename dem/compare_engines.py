@@ -86,11 +86,12 @@ def _engine_version(name: str) -> str:
     return package_version(name)
 
 
-def engine_tilt(model, settings: Settings, protocol=None) -> EngineTilt:
-    """The hold-protocol tilt test of ``model`` with ``settings.engine``."""
+def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> EngineTilt:
+    """The hold-protocol tilt test of ``model`` with ``settings.engine`` (``assembly``: the blocks
+    ``model`` was built from, for the default LP-started bracket)."""
     from dem.protocols import tilt
 
-    r = tilt(model, settings, protocol)
+    r = tilt(model, settings, protocol, assembly=assembly)
     hinges = tuple((j.joint, j.face) for j in r.joints if j.state in ("hinge", "hinge+slide"))
     slides = tuple(j.joint for j in r.joints if "slide" in j.state)
     return EngineTilt(settings.engine, float(r.lam), r.mode, hinges, slides, int(r.n_sims), float(r.wall_s),
@@ -119,7 +120,7 @@ def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] =
     for f in frictions:
         mj, mb = FRICTIONS[f]
         lp = lim.solve_lp(asm, float("inf"), float("inf")) if f == "none" else lim.solve_lp(asm, mj, mb)
-        res = {e: engine_tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol) for e in engines}
+        res = {e: engine_tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, asm) for e in engines}
         rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res))
     return rows
 

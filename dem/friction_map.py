@@ -60,13 +60,9 @@ SYNTHETIC_CASE = "dem.friction_map:synthetic_case"
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
 # Default protocol of a map tilt: hold-and-bisect to MAP_TILT_TOL, first bracket around the static
-# LP of the same blocks at the case's friction ("start": "lp", dem.protocols.tilt): 4 simulations per
-# tilt instead of 7. The 0.5 % tilt test proper keeps the ramp-scan start: it is validated against
-# that LP, and near the threshold PyBullet's outcome is not monotonic in lambda, so a bracket seeded
-# at the LP samples the noisy band near the LP (benchmarks/validate_dem.py, same machine and code,
-# measured with the former dt 1 ms / 200 iteration defaults and not repeated at the current ones:
-# LP start 4 of 22 cases beyond 3 %, mean |error| 2.0 %, hinge layouts 16 of 22; scan start 8 of
-# 22, 2.5 %, 18 of 22). The map's output is the mode and mu*, where the saving matters.
+# LP of the same blocks at the case's friction ("start": "lp", dem.protocols.tilt, also the tilt
+# test's default): 4 simulations per tilt instead of 7 from the ramp scan. The map's output is the
+# mode and mu*, where the saving matters.
 MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp"}
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)

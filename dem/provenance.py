@@ -13,9 +13,21 @@ def package_version(name: str) -> str:
         return "not installed"
 
 
+def cpu_math() -> str:
+    """The CPU features that decide which math kernels run: glibc picks FMA variants of sin/cos
+    (called inside the engines) when the CPU has FMA and AVX2, so results can differ in the last
+    bit, and near a threshold by more, between CPUs with and without them (dem.engines.inputs)."""
+    try:
+        from numpy._core._multiarray_umath import __cpu_features__ as f
+    except ImportError:  # numpy < 2
+        from numpy.core._multiarray_umath import __cpu_features__ as f
+    libc = " ".join(platform.libc_ver()).strip() or "unknown libc"
+    return f"{platform.machine()} {libc}; " + " ".join(k for k in ("FMA3", "AVX2", "AVX512F") if f.get(k))
+
+
 def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
     """Versions of archdem and the libraries whose numbers a result depends on."""
-    out = {"python": sys.version.split()[0], "platform": platform.platform()}
+    out = {"python": sys.version.split()[0], "platform": platform.platform(), "cpu_math": cpu_math()}
     for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco") + tuple(extra):
         out[name] = package_version(name)
     return out

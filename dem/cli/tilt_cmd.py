@@ -31,7 +31,8 @@ def _run(args: argparse.Namespace) -> int:
     out = writable_dir(args.out)
     if args.plot:
         writable_file(args.plot)
-    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol), label=label)
+    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start),
+               label=label, assembly=asm)
     path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
     if args.plot:
         from dem.figures import save_tilt_figure
@@ -55,6 +56,8 @@ def register(sub) -> None:
     p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
     p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
     p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default="hold")
+    p.add_argument("--start", choices=("lp", "scan"), default="lp",
+                   help="hold: first bracket around the static LP of the blocks (default) or from a fast ramp")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
     add_engine_argument(p)

@@ -37,6 +37,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from dem.engines.base import Contacts, Engine
+from dem.engines.inputs import accel, on_grid, significant
 from dem.model import Model
 from dem.settings import Settings
 from specimens.mesh import prism
@@ -97,7 +98,7 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
         m = prism(poly, width, settings.inflate)
         v = np.asarray(m.vertices, float).copy()
         v[:, 2] += z
-        assets.append(f'<mesh name="{name}" vertex="{_f(v - c)}"/>')
+        assets.append(f'<mesh name="{name}" vertex="{_f(on_grid(v - c))}"/>')
 
     for k, poly in enumerate(model.base.pieces):
         mesh(f"base{k}", poly, model.base.width, 0.0, np.zeros(3))
@@ -109,8 +110,8 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
                     f'<inertial pos="0 0 0" mass="{_f(m_base)}" diaginertia="{_f([m_base] * 3)}"/>'
                     + "".join(world) + '</body>']
     for i, b in enumerate(model.bodies):
-        c = np.asarray(b.centroid, float)
-        I = np.asarray(b.inertia, float)
+        c = on_grid(b.centroid)  # machine-independent inputs (dem.engines.inputs)
+        I = significant(np.asarray(b.inertia, float))
         geoms = []
         for k, poly in enumerate(b.pieces):
             nm = f"b{i}p{k}"
@@ -123,7 +124,7 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
                       '<joint name="j{i}r" type="hinge" axis="0 0 1" damping="0"/>').format(i=i)
         else:
             joints = f'<freejoint name="j{i}"/>'
-        inertial = (f'<inertial pos="0 0 0" mass="{_f(b.mass)}" '
+        inertial = (f'<inertial pos="0 0 0" mass="{_f(significant(b.mass))}" '
                     f'fullinertia="{_f([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])}"/>')
         bodies.append(f'<body name="body{i}" pos="{_f(c)}">{joints}{inertial}{"".join(geoms)}</body>')
     g = settings.g
@@ -174,7 +175,7 @@ class MuJoCoEngine(Engine):
         mujoco.mj_forward(self._m, self._d)
 
     def set_gravity(self, vec) -> None:
-        self._m.opt.gravity[:] = np.asarray(vec, float)
+        self._m.opt.gravity[:] = accel(vec)
 
     def step(self, n: int = 1) -> None:
         self._mj.mj_step(self._m, self._d, nstep=n * self._nsub)

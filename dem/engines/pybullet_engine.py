@@ -22,6 +22,10 @@ Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
   gate) because of the friction anchors, and without anchors free Sh06-Sd010 drifts 0.47 mm in
   5 s at rest; contactBreakingThreshold 0.05-0.2 mm gave +0.9 to +2.4 % and 0.06-0.17 mm of drift
   around the 0.1 mm gate. Multibodies: 0.301 and 0.085 / 0.063 mm (Sh06-Sd010 free / Sh1-Sd025 glued);
+* every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
+  gravity of every step) is first made machine-independent (:mod:`dem.engines.inputs`): near a
+  threshold a last-bit difference from numpy's or OpenBLAS's CPU-specific kernels moved a tilt
+  lambda by up to 5.7 %;
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
@@ -36,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from dem.engines.base import Contacts, Engine
+from dem.engines.inputs import accel, on_grid, principal_frame, significant
 from dem.model import Model
 from dem.settings import Settings
 from specimens.mesh import prism
@@ -132,7 +137,7 @@ class PyBulletEngine(Engine):
                     m = prism(poly, width, settings.inflate)
                 v = np.asarray(m.vertices, float).copy()
                 v[:, 2] += z_off
-                vb = (v - c) @ R  # = R^T (v - c) row-wise
+                vb = on_grid((v - c) @ R)  # = R^T (v - c) row-wise, on the 1 nm grid (dem.engines.inputs)
                 f = self._tmp / f"piece{n_files[0]}.obj"
                 n_files[0] += 1
                 _write_obj(f, vb, np.asarray(m.faces))
@@ -155,12 +160,13 @@ class PyBulletEngine(Engine):
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
         for k, b in enumerate(model.bodies):
-            R, I = b.principal_frame()
-            c = np.asarray(b.centroid, float)
+            R, I, q = principal_frame(b.inertia)  # machine-independent (dem.engines.inputs)
+            c = on_grid(b.centroid)
+            mass = significant(b.mass)
             s = shape(b.pieces, b.width, R, c, float(c[2]))
-            bid = p.createMultiBody(baseMass=b.mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
-                                    baseOrientation=_rot_to_quat(R))
-            p.changeDynamics(bid, -1, mass=b.mass, localInertiaDiagonal=[float(x) for x in I],
+            bid = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
+                                    baseOrientation=q)
+            p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],
                              lateralFriction=f_block, restitution=settings.restitution,
                              rollingFriction=0.0, spinningFriction=0.0, linearDamping=0.0, angularDamping=0.0,
                              frictionAnchor=int(settings.friction_anchor),
@@ -174,7 +180,7 @@ class PyBulletEngine(Engine):
 
     # -- running --------------------------------------------------------------------------
     def set_gravity(self, vec) -> None:
-        self._gravity = np.asarray(vec, float)
+        self._gravity = vec = accel(vec)
         self._p.setGravity(float(vec[0]), float(vec[1]), float(vec[2]))
 
     def drive_base(self, x: float, v: float) -> None:

@@ -83,6 +83,15 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
     assert r.protocol.guess == lp and r.protocol.start == "lp"
     assert levels[:2] == [pr.GUESS_BRACKET[1] * lp, pr.GUESS_BRACKET[0] * lp]
     assert r.bracket[0] <= truth < r.bracket[1] and r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
+    # the default start: the LP when the assembly is given, otherwise the ramp scan (faked here:
+    # collapse detected 10 % above the truth); the result stores which one ran
+    auto = tilt(model, settings, TiltProtocol(tol=0.005), assembly=asm)
+    assert auto.protocol.start == "lp" and auto.protocol.guess == lp and auto.lam == r.lam
+    monkeypatch.setattr(pr, "simulate", lambda model, settings, load, duration, **kw:
+                        SimpleNamespace(collapsed=True, t_collapse=1.1 * truth / load.rate))
+    scan = tilt(model, settings, TiltProtocol(tol=0.005))
+    assert scan.protocol.start == "scan" and scan.protocol.guess is None
+    assert scan.bracket[0] <= truth < scan.bracket[1]
     with pytest.raises(ArchdemInputError, match="start"):
         TiltProtocol(start="guess")
     with pytest.raises(ArchdemInputError, match="guess"):  # the former sentinel: a clear error, not a TypeError
