@@ -53,30 +53,32 @@ def _record_plan(ctx: CampaignContext) -> list:
 
 
 # Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies, defaults dt 0.5 ms /
-# 100 iterations, tilt levels held 1 s (wall of the step x 2 cores / units), measured on a 2-core
-# machine stepping a glued specimen at 2.6 s per simulated second (machine_speed 1.76-1.93).
-# Quick values: a quick campaign run (366 s: tilt 130 s for 11 tests, map 100 s for 10 cases,
-# shake 47 s for 2 thresholds, record 66 s for 1). Full values: the full campaign run with levels
-# held 2 s (65.2 min: tilt 545 s for 22 tests, map 2167 s for 173 cases, shake 787 s for 30
-# thresholds, record 382 s for 3), the tilt re-measured held 1 s (the 22 x 2 tilt tests of
-# benchmarks/validate_dem.py in 930 s), the map re-measured held 1 s (``archdem campaign --steps map``,
-# 176 cases in 1670 s), shake and record scaled by the quick run's measured ratios to its former
-# values (0.94, 0.83) -- not re-measured on a full run.
+# 100 iterations, tilt levels ramped 0.5 s and held 1 s (wall of the step x 2 cores / units), on the
+# scale of REFERENCE_SPEED: each measurement x 1.9 / the machine_speed of its machine.
+# Quick values: a quick campaign run from a fresh clone (204 s at machine_speed 1.65: tilt 64.8 s for
+# 11 tests, map 52.5 s for 10 cases, shake 31.8 s for 2 thresholds, record 36.2 s for 1).
+# Full values: tilt from the 44 tilt tests of benchmarks/validate_dem.py (338 s at 1.65; the full
+# step runs 22 of the same kind); map from ``archdem campaign --steps map`` (176 cases in 1670 s at
+# 1.64, levels then ramped 1 s) x 338 / 471 (the measured saving of the 0.5 s ramp on the
+# validate_dem.py tilts); shake and record from the full campaign run with levels held 2 s (787 s for
+# 30 thresholds, 382 s for 3, at about 1.9), scaled by the quick values' measured ratios to their
+# former ones -- not re-measured on a full run. The machine_speed reading tracks stepping only: the
+# quick shake and record steps (untouched by the code changes in between) cost 1.3 and 1.6 x less
+# on the 1.65 machine than on the 1.76 one, both brought to this scale.
 UNIT_CORE_S = {
-    ("tilt", True): 23.7,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 35.2,  # ... to 0.5 %, LP-started (6 simulations): 42.3 measured with the ramp-scan
-    #   start (9) scaled by 488 / 587 s, the LP- and scan-started 44 tilt tests of validate_dem.py
-    ("map", True): 19.9,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 19.0,
-    ("shake", True): 46.9,  # one threshold (scan + bisection) at one frequency, tol 2 %
-    ("shake", False): 48.9,  # ... ceiling 6 x lambda and tol 1 %
-    ("record", True): 132.6,  # one scaled-record threshold, 3 s window
-    ("record", False): 212.0,  # ... 7 s window, tol 1 %
+    ("tilt", True): 13.6,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
+    ("tilt", False): 17.7,  # ... to 0.5 %, LP-started (6 simulations)
+    ("map", True): 12.1,  # one map case (tilt to 2 %, LP-started bracket)
+    ("map", False): 15.8,
+    ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %
+    ("shake", False): 38.2,  # ... ceiling 6 x lambda and tol 1 %
+    ("record", True): 83.4,  # one scaled-record threshold, 3 s window
+    ("record", False): 133.3,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
 # Wall seconds per simulated second that :func:`machine_speed` reads on the machine of UNIT_CORE_S
 # (5 calls on an idle 2-core machine: PyBullet 1.80-2.09, median 1.93; MuJoCo 1.15-1.31, median 1.24;
-# 1.76 at the start of the quick run above). The estimate scales
+# another machine read 1.64-1.65, e.g. at the start of the quick run above). The estimate scales
 # the unit costs by this machine's own reading over these, so it holds on a faster machine too.
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25}
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
