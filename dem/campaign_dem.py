@@ -56,24 +56,21 @@ def _record_plan(ctx: CampaignContext) -> list:
 # 100 iterations, tilt levels ramped 0.5 s and held 1 s (wall of the step x 2 cores / units), on the
 # scale of REFERENCE_SPEED: each measurement x 1.9 / the machine_speed of its machine.
 # Quick values: a quick campaign run from a fresh clone (204 s at machine_speed 1.65: tilt 64.8 s for
-# 11 tests, map 52.5 s for 10 cases, shake 31.8 s for 2 thresholds, record 36.2 s for 1).
-# Full values: tilt from the 44 tilt tests of benchmarks/validate_dem.py (338 s at 1.65; the full
-# step runs 22 of the same kind); map from ``archdem campaign --steps map`` (176 cases in 1670 s at
-# 1.64, levels then ramped 1 s) x 338 / 471 (the measured saving of the 0.5 s ramp on the
-# validate_dem.py tilts); shake and record from the full campaign run with levels held 2 s (787 s for
-# 30 thresholds, 382 s for 3, at about 1.9), scaled by the quick values' measured ratios to their
-# former ones -- not re-measured on a full run. The machine_speed reading tracks stepping only: the
-# quick shake and record steps (untouched by the code changes in between) cost 1.3 and 1.6 x less
-# on the 1.65 machine than on the 1.76 one, both brought to this scale.
+# 11 tests, map 52.5 s for 10 cases, shake 31.8 s for 2 thresholds, record 36.2 s for 1). Full
+# values: the full campaign run end to end from a fresh clone (1914 s at 1.65: tilt 164.6 s for 22
+# tests, map 868.6 s for 176 cases, shake 588.8 s for 30 thresholds, record 273.3 s for 3; the
+# former values estimated it at 34 min). The machine_speed reading tracks stepping only: the quick
+# shake and record steps (untouched by the code changes in between) cost 1.3 and 1.6 x less on the
+# 1.65 machine than on a 1.76 one, both brought to this scale.
 UNIT_CORE_S = {
     ("tilt", True): 13.6,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 17.7,  # ... to 0.5 %, LP-started (6 simulations)
+    ("tilt", False): 17.2,  # ... to 0.5 %, LP-started (6 simulations)
     ("map", True): 12.1,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 15.8,
+    ("map", False): 11.4,
     ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %
-    ("shake", False): 38.2,  # ... ceiling 6 x lambda and tol 1 %
+    ("shake", False): 45.2,  # ... ceiling 6 x lambda and tol 1 %
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window
-    ("record", False): 133.3,  # ... 7 s window, tol 1 %
+    ("record", False): 209.8,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
 # Wall seconds per simulated second that :func:`machine_speed` reads on the machine of UNIT_CORE_S

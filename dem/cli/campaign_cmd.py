@@ -36,7 +36,7 @@ def _campaign(args: argparse.Namespace) -> int:
         parts = "; ".join(f"{k}: {e['units']} {e['what']}" for k, e in est.items())
         print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine}: {parts}; estimated "
               f"{_duration(total)} of simulation at this machine's {speed:.2f} s per simulated second "
-              f"(the unit costs were measured at {REFERENCE_SPEED[ctx.engine]:.2f}; steps already finished "
+              f"(the unit costs are for a machine reading {REFERENCE_SPEED[ctx.engine]:.2f}; steps already finished "
               f"in {out} are kept)", flush=True)
     manifest = run_campaign(ctx, steps)
     print(f"campaign finished in {time.perf_counter() - t0:.1f} s; results in {out}")

@@ -172,6 +172,21 @@ def test_time_scale_similarity():
     assert p1.hold_time / st1.dt == pytest.approx(p0.hold_time / st0.dt, rel=1e-9)
 
 
+def test_case_key_holds_the_protocol_timing():
+    # a study made with other ramp/hold defaults must not be resumed into: both times are part of
+    # the case dict (the study's key), and a case with another ramp is another case
+    from dem.protocols import TiltProtocol
+    from dem.sweep import case_key
+    from specimens.geometry import PointedArch
+
+    arch = PointedArch.from_ratios(0.6, 0.15, 0.2)
+    c = fm.make_case("s", arch, "glued", 0.5, 1.0)
+    d = TiltProtocol()
+    assert c["protocol"]["ramp_time"] == d.ramp_time and c["protocol"]["hold_time"] == d.hold_time
+    other = fm.make_case("s", arch, "glued", 0.5, 1.0, protocol={**fm.MAP_PROTOCOL, "ramp_time": 2 * d.ramp_time})
+    assert case_key(other) != case_key(c)
+
+
 # ----------------------------------------------------------------------------- CLI
 def _cli(argv, capsys):
     from dem.cli import main
