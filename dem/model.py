@@ -6,8 +6,8 @@ frame; gravity is a vector in it (``(0, -g, 0)`` at rest, see :mod:`dem.load`).
 
 A body is a union of convex prisms (each a convex counter-clockwise polygon in x-y extruded
 over ``width`` along z, centred on z = 0), with its mass, centroid and centroidal inertia in
-the arch frame. ``principal_frame`` gives the rotation to the principal axes, which is what
-engines such as PyBullet want as the body frame. Joints are the interfaces the detection
+the arch frame (:func:`dem.engines.inputs.principal_frame` gives the rotation to the principal
+axes, which is what engines such as PyBullet want as the body frame). Joints are the interfaces the detection
 reads (end points at the intrados/extrados, unit normal from body ``a`` to body ``b``;
 index ``-1`` is the base).
 """
@@ -32,16 +32,6 @@ class BodySpec:
     centroid: np.ndarray  # (3,), z = 0 for prisms centred on z = 0
     inertia: np.ndarray  # (3, 3) centroidal, arch frame
     outline: np.ndarray  # (n, 2) outline polygon, for drawings and detection
-
-    def principal_frame(self) -> tuple[np.ndarray, np.ndarray]:
-        """``(R, I)``: proper rotation whose columns are the principal axes, and the moments.
-
-        ``inertia = R @ diag(I) @ R.T``.
-        """
-        w, v = np.linalg.eigh(self.inertia)
-        if np.linalg.det(v) < 0:
-            v[:, 0] = -v[:, 0]
-        return v, w
 
     def points(self) -> np.ndarray:
         """Outline points at z = 0 plus the two z faces of the outline, (m, 3) [m]: the

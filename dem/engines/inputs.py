@@ -13,7 +13,8 @@ accelerations are rounded to a fixed grid, masses and moments to 10 significant 
 principal frames get a canonical sign and a rounded quaternion. Upstream differences of a
 few units in the last place then land in the same grid cell except with a probability of
 about 1e-7 per number (grid / ulp), while the rounding itself (1 nm, 1e-7 m/s^2) is far
-below anything physical. Only IEEE-exact operations (+ - * / sqrt, rint) are used here.
+below anything physical. After the rounding only IEEE-exact operations (+ - * / sqrt, rint)
+are used.
 """
 from __future__ import annotations
 

@@ -44,6 +44,22 @@ def test_principal_frame_is_a_canonical_proper_rotation():
     assert np.array_equal(R, np.eye(3)) and list(I) == [2.0, 1.0, 1.0] and q == (0.0, 0.0, 0.0, 1.0)
 
 
+def test_principal_frame_reconstructs_the_catalogue_inertias():
+    # what the engines receive: R diag(I) R^T = the body's inertia, R proper, moments positive;
+    # 1e-8 of the largest moment = the quaternion's 1e-9 grid (rotation error ~2e-9 rad, twice,
+    # on moments up to a few times apart) and the 10-digit moments
+    from dem.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    for config in ("glued", "free"):
+        for b in from_assembly(discretise(get_specimen("Sh1-Sd025").arch, config=config)).bodies:
+            R, I, q = principal_frame(b.inertia)
+            J = np.asarray(b.inertia)
+            assert np.allclose(R @ np.diag(I) @ R.T, J, rtol=0, atol=1e-8 * np.abs(J).max())
+            assert np.linalg.det(R) == pytest.approx(1.0, abs=1e-12) and np.all(I > 0)
+
+
 # A tilt level held near the threshold of the most sensitive catalogue case found (Sh1-Sd020 glued,
 # no sliding), poses hashed bit for bit after 0.6 s.
 _RUN = """

@@ -22,16 +22,6 @@ def test_model_carries_assembly(config):
         assert p[:, 1].max() == pytest.approx(0.0, abs=1e-15)
 
 
-def test_principal_frame_reconstructs_inertia():
-    asm = discretise(get_specimen("Sh1-Sd025").arch, config="glued")
-    for b in from_assembly(asm).bodies:
-        R, I = b.principal_frame()
-        # identity R diag(I) R^T = inertia, R proper (det +1); 1e-12 relative = eigen-solver rounding
-        assert np.allclose(R @ np.diag(I) @ R.T, b.inertia, rtol=1e-10, atol=1e-14)
-        assert np.linalg.det(R) == pytest.approx(1.0, abs=1e-12)
-        assert np.all(I > 0)
-
-
 def test_single_block_closed_form():
     m = single_block(0.1, 0.2, width=0.1, density=1000.0)
     b = m.bodies[0]
