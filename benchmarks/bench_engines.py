@@ -82,9 +82,10 @@ def _tilt_time(engine: str, sid: str) -> dict:
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
-    m = from_assembly(discretise(get_specimen(sid).arch, config="glued"), name=sid)
+    asm = discretise(get_specimen(sid).arch, config="glued")
+    m = from_assembly(asm, name=sid)
     t0 = time.perf_counter()
-    r = engine_tilt(m, Settings(engine=engine))
+    r = engine_tilt(m, Settings(engine=engine), assembly=asm)  # the default protocol: LP-started bracket
     return {"engine": engine, "id": sid, "lambda": r.lam, "mode": r.mode, "n_sims": r.n_sims,
             "wall_s": time.perf_counter() - t0, "peak_rss_mb": _peak_rss_mb(), "load_avg_1min": os.getloadavg()[0]}
 
