@@ -158,12 +158,13 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     for nm, v in (("mu_joint", mu_joint), ("mu_base", mu_base)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"{nm} must be a finite number > 0, got {v!r}")
+    default = TiltProtocol()
     return {
         "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
         # the ramp and hold times are written out so that a study made with other defaults is not
         # resumed into (its cases get other keys and are recomputed beside the old ones)
-        "protocol": {"ramp_time": TiltProtocol().ramp_time, "hold_time": TiltProtocol().hold_time,
+        "protocol": {"ramp_time": default.ramp_time, "hold_time": default.hold_time,
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),

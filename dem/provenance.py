@@ -13,14 +13,21 @@ def package_version(name: str) -> str:
         return "not installed"
 
 
+def numpy_cpu() -> tuple[dict[str, bool], list[str]]:
+    """numpy's view of the CPU: its feature flags, and the SIMD targets it dispatches here."""
+    try:
+        from numpy._core import _multiarray_umath as mu
+    except ImportError:  # numpy < 2
+        from numpy.core import _multiarray_umath as mu
+    f = mu.__cpu_features__
+    return f, [t for t in mu.__cpu_dispatch__ if f.get(t)]
+
+
 def cpu_math() -> str:
     """The CPU features that decide which math kernels run: glibc picks FMA variants of sin/cos
     (called inside the engines) when the CPU has FMA and AVX2, so results can differ in the last
     bit, and near a threshold by more, between CPUs with and without them (dem.engines.inputs)."""
-    try:
-        from numpy._core._multiarray_umath import __cpu_features__ as f
-    except ImportError:  # numpy < 2
-        from numpy.core._multiarray_umath import __cpu_features__ as f
+    f, _ = numpy_cpu()
     libc = " ".join(platform.libc_ver()).strip() or "unknown libc"
     return f"{platform.machine()} {libc}; " + " ".join(k for k in ("FMA3", "AVX2", "AVX512F") if f.get(k))
 

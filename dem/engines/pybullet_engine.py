@@ -25,7 +25,7 @@ Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
 * every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
   gravity of every step) is first made machine-independent (:mod:`dem.engines.inputs`): near a
   threshold a last-bit difference from numpy's or OpenBLAS's CPU-specific kernels moved a tilt
-  lambda by up to 5.7 %;
+  lambda from 0.14 % above to 5.5 % below the LP;
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
