@@ -1,0 +1,61 @@
+"""Convergence of the shake threshold (least collapsing amplitude of a one-cycle sine, scan +
+bisection to 1 %) in the engine's numerical settings: one specimen and frequency, a threshold
+per ``engine:dt:iterations`` (iterations are PyBullet's solver iterations; MuJoCo ignores them
+and sub-steps at <= 0.25 ms, so its dt refines the step only below that). Same scan range as
+the campaign's shake step would use for a free choice: static onset lambda to 5 x lambda.
+Writes benchmarks/results/shake_convergence_<id>_<f>Hz[-N].json (not part of ``make bench``:
+a threshold costs 5-40 s on 2 cores at these settings).
+
+    python benchmarks/shake_convergence.py [--id Sh06-Sd015] [--freq 6]
+        [--settings pybullet:5e-4:100,pybullet:5e-4:200,pybullet:2.5e-4:200,mujoco:5e-4:100]
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import time
+
+from _common import report
+
+
+def main() -> None:
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from dem.shake import ShakeProtocol
+    from dem.shake_domain import static_onset
+    from dem.thresholds import threshold
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--id", default="Sh06-Sd015")
+    ap.add_argument("--freq", type=float, default=6.0)
+    ap.add_argument("--config", default="glued")
+    ap.add_argument("--settings", default="pybullet:5e-4:100,pybullet:5e-4:200,pybullet:5e-4:400,"
+                    "pybullet:2.5e-4:100,pybullet:2.5e-4:200,mujoco:5e-4:100,mujoco:1.25e-4:100",
+                    help="comma-separated engine:dt:iterations")
+    ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    a = ap.parse_args()
+    arch = get_specimen(a.id).arch
+    model = from_assembly(discretise(arch, config=a.config), name=a.id)
+    st0 = Settings()
+    lam = static_onset(arch, a.config, st0.mu_joint, st0.mu_base)
+    rows = []
+    for spec in a.settings.split(","):
+        eng, dt, it = spec.split(":")
+        st = st0.with_(engine=eng, dt=float(dt), solver_iterations=int(it))
+        t0 = time.perf_counter()
+        th = threshold(model, a.freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=a.workers)
+        rows.append({"engine": eng, "dt": float(dt), "solver_iterations": int(it), "amplitude_g": th.amplitude_g,
+                     "bracket_g": list(th.bracket_g), "n_sims": th.n_sims,
+                     "survival_bands_above": th.survival_bands_above, "wall_s": time.perf_counter() - t0,
+                     "load_avg_1min": os.getloadavg()[0]})
+        print(f"{spec}: {th.amplitude_g:.4f} g ({th.n_sims} sims, {rows[-1]['wall_s']:.1f} s)", flush=True)
+    amps = [r["amplitude_g"] for r in rows]
+    report(f"shake_convergence_{a.id}_{a.freq:g}Hz",
+           {"id": a.id, "config": a.config, "freq_hz": a.freq, "static_lambda": lam, "workers": a.workers,
+            "max_over_min": max(amps) / min(amps), "rows": rows})
+
+
+if __name__ == "__main__":
+    main()
