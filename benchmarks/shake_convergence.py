@@ -1,8 +1,9 @@
 """Convergence of the shake threshold (least collapsing amplitude of a one-cycle sine, scan +
 bisection to 1 %) in the engine's numerical settings: one specimen and frequency, a threshold
-per ``engine:dt:iterations`` (iterations are PyBullet's solver iterations; MuJoCo ignores them
-and sub-steps at <= 0.25 ms, so its dt refines the step only below that). Same scan range as
-the campaign's shake step would use for a free choice: static onset lambda to 5 x lambda.
+per ``engine:dt:iterations`` (iterations are PyBullet's solver iterations; MuJoCo takes its own
+from ``MuJoCoOptions`` and sub-steps at <= 0.25 ms, so its dt refines the step only below that).
+Scan from the static onset lambda to ``--max-ratio`` x lambda (5, as ``bench_shake.py``; the
+campaign scans to 4 x quick and 6 x full).
 Writes benchmarks/results/shake_convergence_<id>_<f>Hz[-N].json (not part of ``make bench``:
 a threshold costs 5-40 s on 2 cores at these settings).
 
@@ -34,6 +35,7 @@ def main() -> None:
     ap.add_argument("--settings", default="pybullet:5e-4:100,pybullet:5e-4:200,pybullet:5e-4:400,"
                     "pybullet:2.5e-4:100,pybullet:2.5e-4:200,mujoco:5e-4:100,mujoco:1.25e-4:100",
                     help="comma-separated engine:dt:iterations")
+    ap.add_argument("--max-ratio", type=float, default=5.0, help="scan up to this x the static onset")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     a = ap.parse_args()
     arch = get_specimen(a.id).arch
@@ -45,16 +47,18 @@ def main() -> None:
         eng, dt, it = spec.split(":")
         st = st0.with_(engine=eng, dt=float(dt), solver_iterations=int(it))
         t0 = time.perf_counter()
-        th = threshold(model, a.freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=a.workers)
+        th = threshold(model, a.freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=a.max_ratio * lam, tol=0.01, workers=a.workers)
         rows.append({"engine": eng, "dt": float(dt), "solver_iterations": int(it), "amplitude_g": th.amplitude_g,
-                     "bracket_g": list(th.bracket_g), "n_sims": th.n_sims,
+                     "bracket_g": list(th.bracket_g) if th.bracket_g else None, "n_sims": th.n_sims,
                      "survival_bands_above": th.survival_bands_above, "wall_s": time.perf_counter() - t0,
                      "load_avg_1min": os.getloadavg()[0]})
-        print(f"{spec}: {th.amplitude_g:.4f} g ({th.n_sims} sims, {rows[-1]['wall_s']:.1f} s)", flush=True)
-    amps = [r["amplitude_g"] for r in rows]
+        got = f"{th.amplitude_g:.4f} g" if th.amplitude_g is not None else "no collapse in the scan"
+        print(f"{spec}: {got} ({th.n_sims} sims, {rows[-1]['wall_s']:.1f} s)", flush=True)
+    amps = [r["amplitude_g"] for r in rows if r["amplitude_g"] is not None]
     report(f"shake_convergence_{a.id}_{a.freq:g}Hz",
            {"id": a.id, "config": a.config, "freq_hz": a.freq, "static_lambda": lam, "workers": a.workers,
-            "max_over_min": max(amps) / min(amps), "rows": rows})
+            "max_ratio": a.max_ratio,
+            "max_over_min": max(amps) / min(amps) if amps else None, "rows": rows})
 
 
 if __name__ == "__main__":
