@@ -6,12 +6,13 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
 (0.577 / 1.0) against the no-sliding value. Writes benchmarks/results/validate_dem.json and .md.
 
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
-                                      [--hold-time S] [--ramp-time S]
+                                      [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco]
 
 Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
 default protocol); ``--start scan`` starts it from the ramp scan instead;
 ``--hold-time`` sets how long each level is held and ``--ramp-time`` how long the smooth ramp to
-it lasts (default: the protocol's).
+it lasts (default: the protocol's); ``--engine`` runs everything with the other engine (files
+named ``..._mujoco``).
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ import numpy as np
 OUT = Path(__file__).resolve().parent / "results"
 
 
-def rest_drift(sid: str, config: str, seconds: float = 5.0) -> float:
+def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet") -> float:
     """Largest displacement of any body point after ``seconds`` at rest [m]."""
     from dem.load import Rest
     from dem.model import from_assembly
@@ -36,7 +37,7 @@ def rest_drift(sid: str, config: str, seconds: float = 5.0) -> float:
     from specimens.catalogue import get_specimen
 
     m = from_assembly(discretise(get_specimen(sid).arch, config=config), name=sid)
-    r = simulate(m, Settings(), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
+    r = simulate(m, Settings(engine=engine), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
     return float(r.history.dmax.max())
 
 
@@ -53,8 +54,8 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool, float | None, float | None]) -> dict:
-    sid, config, start, with_drift, hold, ramp = job
+def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dict:
+    sid, config, start, with_drift, hold, ramp, engine = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -70,35 +71,41 @@ def one(job: tuple[str, str, str, bool, float | None, float | None]) -> dict:
 
     timing = {k: v for k, v in (("hold_time", hold), ("ramp_time", ramp)) if v is not None}
     proto = TiltProtocol(start=start, **timing)
-    # every held level of the no-sliding test: (lambda / LP, collapsed, time into the hold at collapse [s]);
-    # with no sliding the LP is the exact threshold, so a collapse below it is spurious
+    # every held level: (lambda / LP, collapsed, time into the hold at collapse [s]), the LP being the
+    # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
+    # the associative one at the reference friction for the reference test (an upper bound only)
     import dem.protocols as protocols
 
-    levels, hold_level = [], protocols.hold_level
+    hold_level = protocols.hold_level
 
-    def logged(model, settings, p, lam):
-        r = hold_level(model, settings, p, lam)
-        levels.append((lam / lp.lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None))
-        return r
+    def logged_tilt(settings, lp_lam: float) -> tuple:
+        levels = []
 
-    protocols.hold_level = logged
-    try:
-        ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), proto, label=sid, assembly=asm)
-    finally:
-        protocols.hold_level = hold_level
-    ref = tilt(m, Settings(), proto, label=sid, assembly=asm)
+        def logged(model, settings, p, lam):
+            r = hold_level(model, settings, p, lam)
+            levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None))
+            return r
+
+        protocols.hold_level = logged
+        try:
+            return tilt(m, settings, proto, label=sid, assembly=asm), levels
+        finally:
+            protocols.hold_level = hold_level
+
+    ns, levels = logged_tilt(Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, engine=engine), lp.lam)
+    ref, levels_ref = logged_tilt(Settings(engine=engine), lp_ref.lam)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
-    drift = rest_drift(sid, config) if with_drift else float("nan")
+    drift = rest_drift(sid, config, engine=engine) if with_drift else float("nan")
     return {
-        "id": sid, "config": config, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
+        "id": sid, "config": config, "engine": engine, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
         "dem_hinges_lambda": lam_h, "mode_nosliding": ns.mode,
         "dem_lambda_ref": ref.lam, "mode_ref": ref.mode, "lp_lambda_ref_associative": lp_ref.lam,
         "ref_joints": [(j.joint, j.state) for j in ref.joints if j.state != "closed"],
-        "n_sims_ref": ref.n_sims, "ref_le_nosliding_plus_1pc": ref.lam <= 1.01 * ns.lam, "rest_drift_5s_m": drift,
+        "n_sims_ref": ref.n_sims, "levels_ref": levels_ref, "ref_le_nosliding_plus_1pc": ref.lam <= 1.01 * ns.lam, "rest_drift_5s_m": drift,
         "out_of_plane_ref": ref.out_of_plane, "wall_s": time.perf_counter() - t0,
     }
 
@@ -136,6 +143,7 @@ def main() -> None:
     ap.add_argument("--hold-time", dest="hold", type=float, default=None, help="hold per level [s] (default: protocol's)")
     ap.add_argument("--ramp-time", dest="ramp", type=float, default=None,
                     help="smooth ramp to each level [s] (default: protocol's)")
+    ap.add_argument("--engine", choices=("pybullet", "mujoco"), default="pybullet")
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     a = ap.parse_args()
     if a.sensitivity:
@@ -148,9 +156,9 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp) for c in a.configs.split(",") for s in ids]
+    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
-        + (f"_ramp{a.ramp:g}" if a.ramp else "")
+        + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.engine == "pybullet" else f"_{a.engine}")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))
@@ -174,6 +182,8 @@ def main() -> None:
     late = sorted((round(t, 2), round(f, 4)) for f, t in col if t > max(up or [0.0]))  # after every genuine one
     lines.append(f"no-sliding held levels: {len(up)} collapses at or above the LP, within {max(up or [float('nan')]):.2f} s "
                  f"of the hold; {len(col) - len(up)} below it (spurious); late collapses (s into the hold, lambda/LP): {late}")
+    col_ref = sorted(round(t, 2) for r in rows for f, c, t in r["levels_ref"] if c)
+    lines.append(f"reference-friction held levels: {len(col_ref)} collapses, times into the hold [s]: {col_ref}")
     (OUT / f"{stem}.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 
