@@ -239,7 +239,8 @@ class TiltProtocol:
     #   Held 0.5 s, measured and rejected: on the 22 cases as good as 1 s (no-sliding mean error 0.75 %
     #   against 0.86 %, 21 of 22 within 3 % both, hinge layouts 19 against 20 of 22, the same modes,
     #   every lambda equal to or one bisection step above the 1 s one) and the glued catalogue map
-    #   in 8.1 min on 2 cores (14.5 min held 1 s, on a slower machine), but a single block sliding at
+    #   in 8.1 min on 2 cores against 11.0 min held 1 s (same machine, the same mu* on all 11 specimens;
+    #   benchmarks/bench_map.py --specimens all, 167 cases), but a single block sliding at
     #   mu = 0.3 reads lambda +3.1 % (PyBullet; MuJoCo +3.0 %) against +1.1 % held 1 s and +1.6 % held
     #   0.75 s, beyond the 2 % of the validation: near mu the block accelerates at only
     #   ~g cos(theta) (lambda - mu), so it takes longer than the hold to reach the collapse
