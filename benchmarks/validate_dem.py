@@ -6,13 +6,14 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
 (0.577 / 1.0) against the no-sliding value. Writes benchmarks/results/validate_dem.json and .md.
 
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
-                                      [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco]
+                                      [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco] [--no-rest]
 
 Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
 default protocol); ``--start scan`` starts it from the ramp scan instead;
 ``--hold-time`` sets how long each level is held and ``--ramp-time`` how long the smooth ramp to
-it lasts (default: the protocol's); ``--engine`` runs everything with the other engine (files
-named ``..._mujoco``).
+it lasts (default: the protocol's); ``--no-rest`` holds every level the full hold time (no rest
+rule, ``TiltProtocol.rest_after = None``; files named ``..._norest``); ``--engine`` runs everything
+with the other engine (files named ``..._mujoco``).
 """
 from __future__ import annotations
 
@@ -55,7 +56,7 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
 
 
 def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dict:
-    sid, config, start, with_drift, hold, ramp, engine = job
+    sid, config, start, with_drift, hold, ramp, engine, rest = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -70,8 +71,9 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dic
     t0 = time.perf_counter()
 
     timing = {k: v for k, v in (("hold_time", hold), ("ramp_time", ramp)) if v is not None}
-    proto = TiltProtocol(start=start, **timing)
-    # every held level: (lambda / LP, collapsed, time into the hold at collapse [s]), the LP being the
+    proto = TiltProtocol(start=start, **timing, **({} if rest else {"rest_after": None}))
+    # every held level: (lambda / LP, collapsed, time into the hold at collapse [s], time into the hold
+    # at which it was ended at rest [s]; None if not), the LP being the
     # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
     # the associative one at the reference friction for the reference test (an upper bound only)
     import dem.protocols as protocols
@@ -83,7 +85,8 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dic
 
         def logged(model, settings, p, lam):
             r = hold_level(model, settings, p, lam)
-            levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None))
+            levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None,
+                           float(r.t_rest - p.ramp_time) if r.t_rest == r.t_rest else None))
             return r
 
         protocols.hold_level = logged
@@ -99,6 +102,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dic
     drift = rest_drift(sid, config, engine=engine) if with_drift else float("nan")
     return {
         "id": sid, "config": config, "engine": engine, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
+        "rest_after": proto.rest_after,
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
@@ -144,6 +148,7 @@ def main() -> None:
     ap.add_argument("--ramp-time", dest="ramp", type=float, default=None,
                     help="smooth ramp to each level [s] (default: protocol's)")
     ap.add_argument("--engine", choices=("pybullet", "mujoco"), default="pybullet")
+    ap.add_argument("--no-rest", dest="rest", action="store_false", help="hold every level the full hold time")
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     a = ap.parse_args()
     if a.sensitivity:
@@ -156,9 +161,9 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine) for c in a.configs.split(",") for s in ids]
+    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine, a.rest) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
-        + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.engine == "pybullet" else f"_{a.engine}")
+        + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") + ("" if a.engine == "pybullet" else f"_{a.engine}")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))
@@ -177,13 +182,17 @@ def main() -> None:
                  f"within 2 % {int(np.sum(err <= 0.02))}/{len(rows)}, hinges {sum(r['hinges_match'] for r in rows)}/{len(rows)}, "
                  f"ref <= ns + 1 % {sum(r['ref_le_nosliding_plus_1pc'] for r in rows)}/{len(rows)}, simulations "
                  f"{sum(r['n_sims_nosliding'] + r['n_sims_ref'] for r in rows)}, wall {time.perf_counter() - t0:.0f} s")
-    col = [(f, t) for r in rows for f, c, t in r["levels_nosliding"] if c]
+    col = [(f, t) for r in rows for f, c, t, _ in r["levels_nosliding"] if c]
     up = [t for f, t in col if f >= 1.0]
     late = sorted((round(t, 2), round(f, 4)) for f, t in col if t > max(up or [0.0]))  # after every genuine one
     lines.append(f"no-sliding held levels: {len(up)} collapses at or above the LP, within {max(up or [float('nan')]):.2f} s "
                  f"of the hold; {len(col) - len(up)} below it (spurious); late collapses (s into the hold, lambda/LP): {late}")
-    col_ref = sorted(round(t, 2) for r in rows for f, c, t in r["levels_ref"] if c)
+    col_ref = sorted(round(t, 2) for r in rows for f, c, t, _ in r["levels_ref"] if c)
     lines.append(f"reference-friction held levels: {len(col_ref)} collapses, times into the hold [s]: {col_ref}")
+    held = [lv for r in rows for lv in r["levels_nosliding"] + r["levels_ref"] if not lv[1]]
+    at_rest = sorted(round(lv[3], 2) for lv in held if lv[3] is not None)
+    lines.append(f"stable held levels: {len(held)}, ended at rest {len(at_rest)} "
+                 f"(times into the hold [s]: {sorted(set(at_rest))})")
     (OUT / f"{stem}.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 

@@ -62,11 +62,16 @@ def _record_plan(ctx: CampaignContext) -> list:
 # former values estimated it at 34 min). The machine_speed reading tracks stepping only: the quick
 # shake and record steps (untouched by the code changes in between) cost 1.3 and 1.6 x less on the
 # 1.65 machine than on a 1.76 one, both brought to this scale.
+# Since the hold's rest rule (TiltProtocol.rest_after): the quick tilt and map values from a quick
+# run at machine_speed 1.40 (tilt 45.7 s for 11 tests, map 36.8 s for 10 cases; 13.6 and 12.1
+# before), the full ones scaled by what the rule saved on the same machine: x 0.80 the tilt (the
+# 44 tilt tests of benchmarks/validate_dem.py, 206 s against 258 s) and x 0.79 the map
+# (benchmarks/bench_map.py --specimens all, 524 s against 661 s).
 UNIT_CORE_S = {
-    ("tilt", True): 13.6,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 17.2,  # ... to 0.5 %, LP-started (6 simulations)
-    ("map", True): 12.1,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 11.4,
+    ("tilt", True): 11.3,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
+    ("tilt", False): 13.8,  # ... to 0.5 %, LP-started (6 simulations)
+    ("map", True): 10.0,  # one map case (tilt to 2 %, LP-started bracket)
+    ("map", False): 9.0,
     ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %
     ("shake", False): 45.2,  # ... ceiling 6 x lambda and tol 1 %
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window

@@ -164,7 +164,8 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
         # the ramp and hold times are written out so that a study made with other defaults is not
         # resumed into (its cases get other keys and are recomputed beside the old ones)
-        "protocol": {"ramp_time": default.ramp_time, "hold_time": default.hold_time,
+        "protocol": {"ramp_time": default.ramp_time, "hold_time": default.hold_time, "rest_after": default.rest_after,
+                     "rest_window": default.rest_window, "rest_growth": default.rest_growth,
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),
@@ -180,8 +181,8 @@ def _scaled_protocol(d: dict, s: float):
         raise ArchdemInputError(f"unknown tilt protocol fields: {sorted(unknown)}")
     p = TiltProtocol(**d)
     kw = {}
-    for k in ("ramp_time", "hold_time", "stair_hold"):
-        if k in names:
+    for k in ("ramp_time", "hold_time", "stair_hold", "rest_after", "rest_window"):
+        if k in names and getattr(p, k) is not None:
             kw[k] = getattr(p, k) * s
     for k in ("scan_rate", "rate"):
         if k in names:

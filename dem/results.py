@@ -76,7 +76,8 @@ def _read_model(g: h5py.Group) -> Model:
 def _write_sim(g: h5py.Group, s: SimResult) -> None:
     g.attrs.update(load=_js(s.load), duration=s.duration, collapsed=s.collapsed, t_collapse=s.t_collapse,
                    mode=s.mode, joints=_js([j.to_dict() for j in s.joints]), out_of_plane=_js(s.out_of_plane),
-                   wall_s=s.wall_s, steps=s.steps, friction_work=s.history.friction_work)
+                   wall_s=s.wall_s, steps=s.steps, t_rest=s.t_rest,
+                   friction_work=s.history.friction_work)
     h = s.history
     for k in ("t", "pos", "quat", "gravity", "dmax", "ke", "fpower"):
         g.create_dataset(k, data=getattr(h, k), compression="gzip" if getattr(h, k).size > 1000 else None)
@@ -87,7 +88,7 @@ def _read_sim(g: h5py.Group) -> SimResult:
     joints = [JointState(**d) for d in json.loads(g.attrs["joints"])]
     return SimResult(json.loads(g.attrs["load"]), float(g.attrs["duration"]), h, bool(g.attrs["collapsed"]),
                      float(g.attrs["t_collapse"]), joints, str(g.attrs["mode"]), json.loads(g.attrs["out_of_plane"]),
-                     float(g.attrs["wall_s"]), int(g.attrs["steps"]))
+                     float(g.attrs["wall_s"]), int(g.attrs["steps"]), float(g.attrs.get("t_rest", float("nan"))))
 
 
 def save_result(result: TiltResult, path: str | Path) -> Path:
@@ -123,7 +124,8 @@ def load_result(path: str | Path) -> TiltResult:
         sims = {n: (_read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}
         return TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
-            TiltProtocol(**json.loads(f.attrs["protocol"])), float(f.attrs["lambda"]),
+            # a result written before the rest rule held every level its full hold_time
+            TiltProtocol(**{"rest_after": None, **json.loads(f.attrs["protocol"])}), float(f.attrs["lambda"]),
             tuple(float(x) for x in f.attrs["bracket"]), int(f.attrs["n_sims"]), float(f.attrs["wall_s"]),
             str(f.attrs["mode"]), [JointState(**d) for d in json.loads(f.attrs["joints"])],
             [tuple(x) for x in json.loads(f.attrs["levels"])], sims["collapse"], sims["stable"],

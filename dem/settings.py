@@ -6,7 +6,8 @@ gives the measurement behind it (PyBullet 3.2.7, catalogue specimens, see
 
 Measured with these defaults (benchmarks/validate_dem.py, 11 specimens x glued/free, dt 0.5 ms,
 100 solver iterations, levels ramped 0.5 s and held 1 s, LP-started bracket, machine-independent
-engine inputs): rest drift in 5 s 0.017-0.097 mm (largest point displacement of any body); single
+engine inputs; the same lambdas on all 44 tilt tests with the hold's rest rule, which ends a level at
+rest from 0.5 s into the hold, see TiltProtocol.rest_after): rest drift in 5 s 0.017-0.097 mm (largest point displacement of any body); single
 block lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda from 5.0 % to 0.1 % below the
 discrete LP, mean |error| 0.86 %, 21 of 22 within 3 % (all but free Sh1-Sd025, -5.0 %, a disordered
 collapse near the base seen at every setting tried), 20 of 22 within 2 %; hinge layout equal to the

@@ -31,7 +31,8 @@ def _run(args: argparse.Namespace) -> int:
     out = writable_dir(args.out)
     if args.plot:
         writable_file(args.plot)
-    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start),
+    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start,
+                                                               **({"rest_after": None} if args.full_hold else {})),
                label=label, assembly=asm)
     path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
     if args.plot:
@@ -58,6 +59,8 @@ def register(sub) -> None:
     p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default="hold")
     p.add_argument("--start", choices=("lp", "scan"), default="lp",
                    help="hold: first bracket around the static LP of the blocks (default) or from a fast ramp")
+    p.add_argument("--full-hold", dest="full_hold", action="store_true",
+                   help="hold: hold every level the full 1 s (by default a level at rest 0.5 s into the hold ends there)")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
     add_engine_argument(p)

@@ -167,6 +167,9 @@ def test_time_scale_similarity():
     assert c_small["time_scale"] == 1.0 and c_big["time_scale"] == pytest.approx(s, rel=1e-12)
     p0, p1 = fm._scaled_protocol(c_small["protocol"], 1.0), fm._scaled_protocol(c_big["protocol"], s)
     assert p1.hold_time == pytest.approx(s * p0.hold_time) and p1.scan_rate == pytest.approx(p0.scan_rate / s)
+    # the rest rule: its times scale like the hold, its growth is relative to the ring thickness
+    assert p1.rest_after == pytest.approx(s * p0.rest_after) and p1.rest_window == pytest.approx(s * p0.rest_window)
+    assert p1.rest_growth == p0.rest_growth
     st0, st1 = fm._scaled_settings(c_small), fm._scaled_settings(c_big)
     # same number of steps per protocol phase at both scales
     assert p1.hold_time / st1.dt == pytest.approx(p0.hold_time / st0.dt, rel=1e-9)
@@ -183,6 +186,7 @@ def test_case_key_holds_the_protocol_timing():
     c = fm.make_case("s", arch, "glued", 0.5, 1.0)
     d = TiltProtocol()
     assert c["protocol"]["ramp_time"] == d.ramp_time and c["protocol"]["hold_time"] == d.hold_time
+    assert c["protocol"]["rest_after"] == d.rest_after and c["protocol"]["rest_growth"] == d.rest_growth
     other = fm.make_case("s", arch, "glued", 0.5, 1.0, protocol={**fm.MAP_PROTOCOL, "ramp_time": 2 * d.ramp_time})
     assert case_key(other) != case_key(c)
 

@@ -96,3 +96,68 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
         TiltProtocol(start="guess")
     with pytest.raises(ArchdemInputError, match="guess"):  # the former sentinel: a clear error, not a TypeError
         TiltProtocol(guess="lp")
+
+
+# ------------------------------------------------------------------------ the hold's rest rule
+def _level(model, settings, lam, **proto):
+    from dem.protocols import hold_level
+
+    return hold_level(model, settings, TiltProtocol(**proto), lam)
+
+
+def test_rest_rule_ends_a_level_at_rest():
+    # a block at half its sliding threshold is at rest: the level ends rest_after into the hold,
+    # not collapsed, having simulated less than the full hold
+    p = TiltProtocol()
+    s = Settings(mu_joint=1.0, mu_base=MU_SLIDE)
+    r = _level(single_block(B, H), s, 0.5 * MU_SLIDE)
+    assert not r.collapsed
+    assert r.t_rest == pytest.approx(p.ramp_time + p.rest_after, abs=s.record_every / 2)
+    assert r.steps < round((p.ramp_time + p.hold_time) / s.dt)
+    full = _level(single_block(B, H), s, 0.5 * MU_SLIDE, rest_after=None)
+    assert not full.collapsed and full.t_rest != full.t_rest  # NaN: held the full hold_time
+    assert full.steps == round((p.ramp_time + p.hold_time) / s.dt)
+
+
+@pytest.mark.parametrize("excess", [0.01, 0.003])
+def test_rest_rule_does_not_end_a_block_sliding_just_above_mu(excess):
+    # 1 % and 0.3 % above mu (the hold's bisection stops at 0.5 %) the block accelerates at only
+    # ~ g (lambda - mu): it must not be taken for at rest, so the level runs as held the full hold
+    # (bit-identical): at +1 % it collapses, at +0.3 % it slides ~3 % of its height in the hold,
+    # short of the collapse displacement (6 %), with or without the rule
+    s = Settings(mu_joint=1.0, mu_base=MU_SLIDE)
+    lam = (1 + excess) * MU_SLIDE
+    r, full = _level(single_block(B, H), s, lam), _level(single_block(B, H), s, lam, rest_after=None)
+    assert r.t_rest != r.t_rest  # NaN: not ended at rest
+    assert r.steps == full.steps and r.collapsed == full.collapsed and r.history.dmax[-1] == full.history.dmax[-1]
+    assert full.history.dmax[-1] > 0.02 * H  # it did slide
+    if excess == 0.01:
+        assert r.collapsed
+
+
+def test_rest_rule_on_an_arch_below_and_above_the_lp():
+    # with no sliding the LP is the exact threshold: 0.9 x LP is at rest (ends early), 1.01 x LP
+    # collapses as when held the full hold
+    from dem.model import from_assembly
+    from dem.protocols import lp_guess
+    from dem.settings import NO_SLIDING_MU
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
+    m, s = from_assembly(asm), Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)
+    lp = lp_guess(asm, s)
+    below = _level(m, s, 0.9 * lp)
+    assert not below.collapsed and below.t_rest == below.t_rest
+    above, above_full = _level(m, s, 1.01 * lp), _level(m, s, 1.01 * lp, rest_after=None)
+    assert above_full.collapsed and above.collapsed and above.t_collapse == above_full.t_collapse
+
+
+def test_rest_rule_inputs():
+    from specimens.errors import ArchdemInputError
+
+    with pytest.raises(ArchdemInputError, match="rest_after"):
+        TiltProtocol(rest_after=-0.1)
+    with pytest.raises(ArchdemInputError, match="rest_growth"):
+        TiltProtocol(rest_growth=0.0)
+    assert TiltProtocol(rest_after=None).rest_after is None

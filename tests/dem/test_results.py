@@ -23,6 +23,9 @@ def test_round_trip(tmp_path, result):
     assert r.levels == [tuple(x) for x in result.levels]
     assert np.array_equal(r.collapse.history.pos, result.collapse.history.pos)
     assert np.array_equal(r.stable.history.quat, result.stable.history.quat)
+    # the stable level ended at rest (the block's rest rule); the time is kept
+    assert result.stable.t_rest == result.stable.t_rest and r.stable.t_rest == result.stable.t_rest
+    assert np.isnan(r.collapse.t_rest)
     assert r.model.bodies[0].mass == result.model.bodies[0].mass
     assert np.array_equal(r.model.bodies[0].pieces[0], result.model.bodies[0].pieces[0])
     assert r.versions["pybullet"] == result.versions["pybullet"]
@@ -36,3 +39,20 @@ def test_never_overwrites_and_atomic(tmp_path, result):
         save_result(result, p)
     assert p.read_bytes() == before
     assert [q.name for q in tmp_path.iterdir()] == ["r.h5"]  # no temporary left behind
+
+
+def test_result_written_before_the_rest_rule_loads_as_held_the_full_time(tmp_path, result):
+    # such a file's protocol has no rest_after: every level was held hold_time, not the new default
+    import json
+
+    import h5py
+
+    p = save_result(result, tmp_path / "old.h5")
+    with h5py.File(p, "r+") as f:
+        d = json.loads(f.attrs["protocol"])
+        for k in ("rest_after", "rest_window", "rest_growth"):
+            d.pop(k)
+        f.attrs["protocol"] = json.dumps(d)
+        del f["stable"].attrs["t_rest"]
+    r = load_result(p)
+    assert r.protocol.rest_after is None and np.isnan(r.stable.t_rest)

@@ -1,6 +1,7 @@
 """``archdem tilt``: JSON keys, result file, exit 2 on bad input."""
 import json
 
+import numpy as np
 import pytest
 
 from dem.cli import main
@@ -28,3 +29,16 @@ def test_tilt_json(tmp_path, capsys):
     from dem.results import load_result
 
     assert load_result(d["result_file"]).lam == pytest.approx(d["lambda"])
+
+
+def test_tilt_full_hold_is_stored(tmp_path, capsys):
+    # --full-hold switches the hold's rest rule off; the result file says so (rest_after null)
+    from dem.results import load_result
+
+    args = ["tilt", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--json", "--out", str(tmp_path)]
+    assert main(args + ["--full-hold"]) == 0
+    full = load_result(json.loads(capsys.readouterr().out)["result_file"])
+    assert main(args) == 0
+    rest = load_result(json.loads(capsys.readouterr().out)["result_file"])
+    assert full.protocol.rest_after is None and rest.protocol.rest_after == 0.5
+    assert np.isnan(full.stable.t_rest)
