@@ -47,14 +47,26 @@ class PointTracker:
         self.c0 = np.array([b.centroid for b in model.bodies])
         self.pts = _points(model)
         self.radius = np.array([np.linalg.norm(p - c, axis=1).max() for p, c in zip(self.pts, self.c0)])
+        # every tracked point in one array (body index, offset from its centroid): one vectorised
+        # evaluation per record instead of a Python loop over the bodies
+        self._body = np.concatenate([np.full(len(p), i) for i, p in enumerate(self.pts)])
+        self._all = np.concatenate(self.pts)
+        self._rel = np.concatenate([p - c for p, c in zip(self.pts, self.c0)])
+        self._starts = np.cumsum([0] + [len(p) for p in self.pts[:-1]])
 
     def displacements(self, pos: np.ndarray, R: np.ndarray) -> list[np.ndarray]:
         """Per body, (m_i, 3) displacements of its tracked points [m]."""
         return [pos[i] + (self.pts[i] - self.c0[i]) @ R[i].T - self.pts[i] for i in range(len(self.pts))]
 
+    def all_displacements(self, pos: np.ndarray, R: np.ndarray) -> np.ndarray:
+        """(m, 3) displacements of every tracked point [m], bodies one after the other; ``pos``
+        (..., n, 3) and ``R`` (..., n, 3, 3) may carry leading (time) axes: then (..., m, 3)."""
+        b = self._body
+        return pos[..., b, :] + np.einsum("...kij,kj->...ki", R[..., b, :, :], self._rel) - self._all
+
     def max_displacement(self, pos: np.ndarray, R: np.ndarray) -> tuple[float, int]:
         """Largest point displacement [m] and the body it belongs to."""
-        d = np.array([np.linalg.norm(u, axis=1).max() for u in self.displacements(pos, R)])
+        d = np.maximum.reduceat(np.linalg.norm(self.all_displacements(pos, R), axis=1), self._starts)
         i = int(np.argmax(d))
         return float(d[i]), i
 

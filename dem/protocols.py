@@ -83,12 +83,11 @@ class SimResult:
     t_rest: float = float("nan")  # time [s] at which the run was ended at rest (``rest``), NaN if it was not
 
 
-def _kinetic_energy(model: Model, v: np.ndarray, w: np.ndarray, R: np.ndarray) -> float:
-    ke = 0.0
-    for i, b in enumerate(model.bodies):
-        Iw = R[i] @ b.inertia @ R[i].T
-        ke += 0.5 * b.mass * float(v[i] @ v[i]) + 0.5 * float(w[i] @ Iw @ w[i])
-    return ke
+def _kinetic_energy(mass: np.ndarray, inertia: np.ndarray, v: np.ndarray, w: np.ndarray, R: np.ndarray) -> float:
+    """Kinetic energy [J] of bodies of ``mass`` (n,) and body-frame ``inertia`` (n, 3, 3) moving at
+    ``v``, ``w`` (n, 3) with orientations ``R`` (n, 3, 3): w . (R I R^T w) = (R^T w) . I (R^T w)."""
+    wb = np.einsum("kji,kj->ki", R, w)
+    return float(0.5 * np.sum(mass * np.einsum("ki,ki->k", v, v)) + 0.5 * np.einsum("ki,kij,kj->", wb, inertia, wb))
 
 
 def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray, base_x: float = 0.0) -> float:
@@ -138,7 +137,9 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     n_steps = int(round(duration / settings.dt))
     tracker = detect.PointTracker(model)
     d_c = settings.collapse_fraction * model.size
-    T, P, Q, Gv, D, KE, FP = [], [], [], [], [], [], []
+    T, P, RM, Gv, D, KE, FP = [], [], [], [], [], [], []
+    mass = np.array([b.mass for b in model.bodies])
+    inertia = np.array([b.inertia for b in model.bodies])
     collapsed, t_col, t_rest = False, float("nan"), float("nan")
     if rest is not None:
         rest_from, rest_k, rest_growth = rest[0], max(1, int(round(rest[1] / (rec * settings.dt)))), rest[2]
@@ -160,25 +161,39 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
             d, i = tracker.max_displacement(pos, R)
             T.append(step * settings.dt)
             P.append(pos)
-            Q.append(Rotation.from_matrix(R).as_quat())
+            RM.append(R)  # turned into quaternions once, at the end
             Gv.append(load.gravity(step * settings.dt))
             D.append(d)
-            KE.append(_kinetic_energy(model, v, w, R))
+            KE.append(_kinetic_energy(mass, inertia, v, w, R))
             FP.append(_friction_power(eng, v, w, pos, bx) if friction_work else float("nan"))
             return d, tracker.body_speed(v, w, i)
 
         record()
+        g_set = None  # the gravity last given to the engine (on the engine's input grid)
         while step < n_steps:
             n = min(rec, n_steps - step)
-            for _ in range(n):
-                if driven:
+            if driven:
+                for _ in range(n):
                     vb += float(accel(load.ground_acceleration(step * settings.dt))) * settings.dt
                     xb += vb * settings.dt
                     eng.drive_base(xb, vb)
-                else:
-                    eng.set_gravity(load.gravity(step * settings.dt))
-                eng.step(1)
-                step += 1
+                    eng.step(1)
+                    step += 1
+            else:
+                # the field of each step (as the engine takes it); a constant stretch (a held tilt
+                # level, rest) is set once and stepped in one call: the same commands in effect
+                gs = [accel(load.gravity((step + j) * settings.dt)) for j in range(n)]
+                j = 0
+                while j < n:
+                    m = 1
+                    while j + m < n and np.array_equal(gs[j + m], gs[j]):
+                        m += 1
+                    if g_set is None or not np.array_equal(gs[j], g_set):
+                        eng.set_gravity(gs[j])
+                        g_set = gs[j]
+                    eng.step(m)
+                    j += m
+                    step += m
             d, speed = record()
             if not collapsed and d > d_c and speed > settings.collapse_speed:
                 collapsed, t_col = True, step * settings.dt
@@ -190,21 +205,24 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
                 break
     finally:
         eng.close()
-    hist = History(np.array(T), np.array(P), np.array(Q), np.array(Gv), np.array(D), np.array(KE), np.array(FP))
-    joints, mode = read_mode(model, settings, hist)
+    nt, nb = len(T), model.n_bodies
+    Q = Rotation.from_matrix(np.array(RM).reshape(-1, 3, 3)).as_quat().reshape(nt, nb, 4)
+    hist = History(np.array(T), np.array(P), Q, np.array(Gv), np.array(D), np.array(KE), np.array(FP))
     Rs = hist.rotations()
+    joints, mode = read_mode(model, settings, hist, Rs)
     oop = detect.out_of_plane(model, hist.pos[-1], Rs[-1])
-    oop["max_dz_history_m"] = max(float(np.abs(u[:, 2]).max()) for k in range(len(hist.t))
-                                  for u in tracker.displacements(hist.pos[k], Rs[k]))
+    oop["max_dz_history_m"] = float(np.abs(tracker.all_displacements(hist.pos, Rs)[..., 2]).max())
     return SimResult(load.describe(), duration, hist, collapsed, t_col, joints, mode, oop,
                      time.perf_counter() - wall0, step, t_rest)
 
 
-def read_mode(model: Model, settings: Settings, hist: History) -> tuple[list[detect.JointState], str]:
+def read_mode(model: Model, settings: Settings, hist: History,
+              Rs: np.ndarray | None = None) -> tuple[list[detect.JointState], str]:
     """Joint states and mode over the mode window of ``hist`` (or over the whole history when
-    the largest displacement never reached the window: then the states describe creep)."""
+    the largest displacement never reached the window: then the states describe creep).
+    ``Rs``: ``hist.rotations()`` if already computed."""
     lo, hi = (f * model.size for f in settings.mode_window)
-    Rs = hist.rotations()
+    Rs = hist.rotations() if Rs is None else Rs
     i0 = int(np.argmax(hist.dmax >= lo)) if np.any(hist.dmax >= lo) else 0
     i1 = int(np.argmax(hist.dmax >= hi)) if np.any(hist.dmax >= hi) else len(hist.t) - 1
     if i1 <= i0:

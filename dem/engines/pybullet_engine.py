@@ -247,20 +247,16 @@ class PyBulletEngine(Engine):
     def contacts(self) -> Contacts:
         cps = self._p.getContactPoints()
         n = len(cps)
-        a = np.empty(n, int)
-        b = np.empty(n, int)
-        pt = np.empty((n, 3))
-        nrm = np.empty((n, 3))
-        fn = np.empty(n)
-        ft = np.empty((n, 3))
-        for k, c in enumerate(cps):
-            a[k] = self._index.get(c[1], -1)
-            b[k] = self._index.get(c[2], -1)
-            pt[k] = c[6]
-            nrm[k] = c[7]
-            fn[k] = c[9]
-            ft[k] = c[10] * np.asarray(c[11]) + c[12] * np.asarray(c[13])
-        return Contacts(a, b, pt, nrm, fn, ft)
+        idx = self._index
+
+        def col(k: int, width: int = 3) -> np.ndarray:
+            return np.array([c[k] for c in cps], dtype=float).reshape(n, width)
+
+        a = np.array([idx.get(c[1], -1) for c in cps], dtype=int)
+        b = np.array([idx.get(c[2], -1) for c in cps], dtype=int)
+        # friction force: the two lateral friction impulses along their directions
+        ft = col(10, 1) * col(11) + col(12, 1) * col(13)
+        return Contacts(a, b, col(6), col(7), col(9, 1).reshape(n), ft)
 
     def versions(self) -> dict:
         from dem.provenance import package_version

@@ -54,3 +54,32 @@ def test_lift_off_is_open():
     pos1 = pos0 + np.array([0.0, 0.002, 0.0])
     states, _ = classify(m, Settings(), pos0, R0, pos1, R0, 0.002)
     assert states[0].state == "open"
+
+
+def test_tracker_vectorised_displacements_match_per_body_ones():
+    # the vectorised form used at every record equals the per-body definition (random rigid poses
+    # of the 15 bodies of a glued arch), and the largest one of a rotation about a corner is the
+    # far corner's chord, 2 r sin(angle / 2) (closed form)
+    from scipy.spatial.transform import Rotation
+
+    from dem.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    m = from_assembly(discretise(get_specimen("Sh06-Sd015").arch, config="glued"))
+    t = PointTracker(m)
+    rng = np.random.default_rng(0)
+    pos = t.c0 + 1e-3 * rng.standard_normal(t.c0.shape)
+    R = Rotation.from_rotvec(0.01 * rng.standard_normal((m.n_bodies, 3))).as_matrix()
+    per_body = t.displacements(pos, R)
+    assert np.allclose(t.all_displacements(pos, R), np.concatenate(per_body), rtol=0, atol=1e-15)
+    d = np.array([np.linalg.norm(u, axis=1).max() for u in per_body])
+    dmax, i = t.max_displacement(pos, R)
+    assert i == int(np.argmax(d)) and dmax == pytest.approx(d.max(), rel=1e-14)
+    # time axis: (nt, n, 3) poses give (nt, m, 3)
+    both = t.all_displacements(np.stack([pos, t.c0]), np.stack([R, np.repeat(np.eye(3)[None], m.n_bodies, 0)]))
+    assert np.allclose(both[0], np.concatenate(per_body), atol=1e-15) and np.abs(both[1]).max() < 1e-15
+    blk = single_block(B, H)
+    pos1, R1 = _pose_rotated(blk, (B / 2, 0.0), -0.02)
+    far = math.hypot(B, H)  # the upper left corner is the farthest from the pivot (right corner)
+    assert PointTracker(blk).max_displacement(pos1, R1)[0] == pytest.approx(2 * far * math.sin(0.01), rel=1e-12)

@@ -3,6 +3,7 @@
 the hold protocol's LP start (its first bracket around the static LP of the same blocks)."""
 import functools
 
+import numpy as np
 import pytest
 
 from dem.model import single_block
@@ -161,3 +162,18 @@ def test_rest_rule_inputs():
     with pytest.raises(ArchdemInputError, match="rest_growth"):
         TiltProtocol(rest_growth=0.0)
     assert TiltProtocol(rest_after=None).rest_after is None
+
+
+def test_kinetic_energy_closed_form():
+    # translation 1/2 m v^2 plus rotation 1/2 w . (R I R^T) w, for a body turned by R
+    from scipy.spatial.transform import Rotation
+
+    from dem.protocols import _kinetic_energy
+
+    m = np.array([2.0, 3.0])
+    inertia = np.array([np.diag([1.0, 2.0, 3.0]), np.diag([0.5, 0.5, 4.0])])
+    R = Rotation.from_rotvec([[0.3, -0.2, 0.1], [0.0, 0.0, 0.0]]).as_matrix()
+    v = np.array([[1.0, 0.0, 0.0], [0.0, 2.0, 0.0]])
+    w = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0]])
+    truth = 0.5 * 2.0 * 1.0 + 0.5 * 3.0 * 4.0 + 0.5 * w[0] @ R[0] @ inertia[0] @ R[0].T @ w[0] + 0.5 * 0.5
+    assert _kinetic_energy(m, inertia, v, w, R) == pytest.approx(truth, rel=1e-14)
