@@ -55,7 +55,7 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool, float | None, float | None, str]) -> dict:
+def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool]) -> dict:
     sid, config, start, with_drift, hold, ramp, engine, rest = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly

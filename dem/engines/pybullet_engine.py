@@ -254,7 +254,7 @@ class PyBulletEngine(Engine):
 
         a = np.array([idx.get(c[1], -1) for c in cps], dtype=int)
         b = np.array([idx.get(c[2], -1) for c in cps], dtype=int)
-        # friction force: the two lateral friction impulses along their directions
+        # friction force: the two lateral friction forces along their directions
         ft = col(10, 1) * col(11) + col(12, 1) * col(13)
         return Contacts(a, b, col(6), col(7), col(9, 1).reshape(n), ft)
 
