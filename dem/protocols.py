@@ -254,7 +254,10 @@ class TiltProtocol:
     #   against 0.76 % (paired difference -0.10 +- 0.12 % standard error: no measurable bias from the
     #   faster ramp), 21 of 22 within 3 % both (free Sh1-Sd025 -5.0 % against -3.9 %), 20 of 22 within
     #   2 % both, hinge layouts 20 of 22 against 18, reference <= no sliding + 1 % 22 of 22 against 21,
-    #   collapses below the LP while held 27 against 33, wall time 338 s against 471 s (-28 %)
+    #   collapses below the LP while held 27 against 33, wall time 338 s against 471 s (-28 %).
+    #   Ramp 0.25 s, measured and rejected (same run with the rest rule): mean error 0.84 % against
+    #   0.86 %, but 20 of 22 within 3 % (Sh06-Sd010 free -3.1 %, Sh1-Sd025 free -3.9 %), 19 within 2 %,
+    #   hinge layouts 16 of 22 against 20, reference <= no sliding + 1 % 21 of 22; 156 s against 209 s
     hold_time: float = 1.0  # hold: longest time held at the level [s] (see rest_after). Measured (benchmarks/validate_dem.py
     #   --start lp, 22 cases, no sliding, 2 s held, every level logged): the 30 levels at or above the
     #   LP (the exact threshold with no sliding) collapsed within 0.43 s of the hold (0.27-0.43 s at
