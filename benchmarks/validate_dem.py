@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
@@ -86,7 +87,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool]) 
         def logged(model, settings, p, lam):
             r = hold_level(model, settings, p, lam)
             levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None,
-                           float(r.t_rest - p.ramp_time) if r.t_rest == r.t_rest else None))
+                           None if math.isnan(r.t_rest) else float(r.t_rest - p.ramp_time)))
             return r
 
         protocols.hold_level = logged

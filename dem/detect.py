@@ -54,10 +54,6 @@ class PointTracker:
         self._rel = np.concatenate([p - c for p, c in zip(self.pts, self.c0)])
         self._starts = np.cumsum([0] + [len(p) for p in self.pts[:-1]])
 
-    def displacements(self, pos: np.ndarray, R: np.ndarray) -> list[np.ndarray]:
-        """Per body, (m_i, 3) displacements of its tracked points [m]."""
-        return [pos[i] + (self.pts[i] - self.c0[i]) @ R[i].T - self.pts[i] for i in range(len(self.pts))]
-
     def all_displacements(self, pos: np.ndarray, R: np.ndarray) -> np.ndarray:
         """(m, 3) displacements of every tracked point [m], bodies one after the other; ``pos``
         (..., n, 3) and ``R`` (..., n, 3, 3) may carry leading (time) axes: then (..., m, 3)."""
@@ -182,8 +178,7 @@ def classify(model: Model, settings: Settings, pos0, R0, pos1, R1, window: float
 def out_of_plane(model: Model, pos: np.ndarray, R: np.ndarray) -> dict:
     """Out-of-plane motion at one instant: largest |z| displacement of any point [m], largest
     tilt of a body's z axis [rad], largest out-of-plane joint slip [m] and twist [rad]."""
-    tr = PointTracker(model)
-    dz = max(float(np.abs(u[:, 2]).max()) for u in tr.displacements(pos, R))
+    dz = float(np.abs(PointTracker(model).all_displacements(pos, R)[:, 2]).max())
     kin = joint_kinematics(model, pos, R)
     return {"max_dz_m": dz, "max_tilt_rad": float(out_of_plane_angle(R).max()),
             "max_joint_oop_slip_m": float(kin["oop"].max()), "max_joint_twist_rad": float(kin["twist"].max())}

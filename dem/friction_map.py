@@ -64,6 +64,8 @@ MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protoco
 # test's default): 4 simulations per tilt instead of 7 from the ramp scan. The map's output is the
 # mode and mu*, where the saving matters.
 MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp"}
+# the hold's timing and rest rule, written out in every case (see make_case)
+HOLD_TIMING = ("ramp_time", "hold_time", "rest_after", "rest_window", "rest_growth")
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)
 LP_REL_TOL = 1e-6  # lambda_LP(mu) counts as the no-sliding value within this relative tolerance
@@ -162,10 +164,9 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     return {
         "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
-        # the ramp and hold times are written out so that a study made with other defaults is not
-        # resumed into (its cases get other keys and are recomputed beside the old ones)
-        "protocol": {"ramp_time": default.ramp_time, "hold_time": default.hold_time, "rest_after": default.rest_after,
-                     "rest_window": default.rest_window, "rest_growth": default.rest_growth,
+        # the ramp and hold times and the rest rule are written out so that a study made with other
+        # defaults is not resumed into (its cases get other keys and are recomputed beside the old ones)
+        "protocol": {**{k: getattr(default, k) for k in HOLD_TIMING},
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),
