@@ -67,9 +67,11 @@ def _record_plan(ctx: CampaignContext) -> list:
 # before), the full ones scaled by what the rule saved on the same machine: x 0.80 the tilt (the
 # 44 tilt tests of benchmarks/validate_dem.py, 206 s against 258 s) and x 0.79 the map
 # (benchmarks/bench_map.py --specimens all, 524 s against 661 s).
+# The full tilt value since the tilt test's first bracket (0.972, 1.01) x LP (TiltProtocol.guess_bracket):
+# the tilt step alone (--steps tilt) at machine_speed 1.61, 85.0 s for 22 tests.
 UNIT_CORE_S = {
-    ("tilt", True): 11.3,  # one tilt test, bisected to 2 % from the LP bracket (4 simulations)
-    ("tilt", False): 13.8,  # ... to 0.5 %, LP-started (6 simulations)
+    ("tilt", True): 11.3,  # one tilt test, bisected to 2 % from the map's LP bracket (4 simulations)
+    ("tilt", False): 9.1,  # ... to 0.5 %, from the tilt test's LP bracket (5 simulations)
     ("map", True): 10.0,  # one map case (tilt to 2 %, LP-started bracket)
     ("map", False): 9.0,
     ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %

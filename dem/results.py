@@ -124,8 +124,10 @@ def load_result(path: str | Path) -> TiltResult:
         sims = {n: (_read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}
         return TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
-            # a result written before the rest rule held every level its full hold_time
-            TiltProtocol(**{"rest_after": None, **json.loads(f.attrs["protocol"])}), float(f.attrs["lambda"]),
+            # a result written before the rest rule held every level its full hold_time, and one
+            # written before guess_bracket started from (0.95, 1.01) x the guess
+            TiltProtocol(**{"rest_after": None, "guess_bracket": (0.95, 1.01), **json.loads(f.attrs["protocol"])}),
+            float(f.attrs["lambda"]),
             tuple(float(x) for x in f.attrs["bracket"]), int(f.attrs["n_sims"]), float(f.attrs["wall_s"]),
             str(f.attrs["mode"]), [JointState(**d) for d in json.loads(f.attrs["joints"])],
             [tuple(x) for x in json.loads(f.attrs["levels"])], sims["collapse"], sims["stable"],

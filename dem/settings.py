@@ -5,19 +5,22 @@ gives the measurement behind it (PyBullet 3.2.7, catalogue specimens, see
 ``benchmarks/validate_dem.py`` and spec 04 §4.1). The object is stored in every result file.
 
 Measured with these defaults (benchmarks/validate_dem.py, 11 specimens x glued/free, dt 0.5 ms,
-100 solver iterations, levels ramped 0.5 s and held 1 s, LP-started bracket, machine-independent
-engine inputs; the same lambdas on all 44 tilt tests with the hold's rest rule, which ends a level at
-rest from 0.5 s into the hold, see TiltProtocol.rest_after): rest drift in 5 s 0.017-0.097 mm (largest point displacement of any body); single
-block lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda from 5.0 % to 0.1 % below the
-discrete LP, mean |error| 0.86 %, 21 of 22 within 3 % (all but free Sh1-Sd025, -5.0 %, a disordered
-collapse near the base seen at every setting tried), 20 of 22 within 2 %; hinge layout equal to the
-LP's or within 0.5 % of its lambda on 20 of 22; reference friction at or below the no-sliding
-lambda + 1 % on 22 of 22. Near the threshold PyBullet's outcome is not monotonic in lambda, so which
-case misses changes with any last-bit change of the inputs or of the protocol: five runs of the
-same 22 cases (LP or scan start, ramp 0.5 or 1 s, before and after dem.engines.inputs, i.e. with
-different last bits) gave 19-21 of 22 within 3 % and mean errors 0.76-1.63 %, and one case moved
-from +0.14 % to -5.5 %. Since dem.engines.inputs the same run gives the same numbers on an AVX-512
-and an AVX2-only CPU. The previous defaults (dt 1 ms, 200 iterations, about the same cost per
+100 solver iterations, levels ramped 0.5 s and held 1 s or ended at rest from 0.5 s into the hold
+(TiltProtocol.rest_after), bisection from (0.972, 1.01) x the LP (TiltProtocol.guess_bracket),
+machine-independent engine inputs): rest drift in 5 s 0.017-0.097 mm (largest point displacement
+of any body); single block lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda from 3.1 %
+below to 0.05 % above the discrete LP, mean |error| 0.69 %, 21 of 22 within 3 % (all but free
+Sh1-Sd025, -3.1 %, a disordered collapse near the base seen at every setting tried), 19 of 22 within
+2 %; hinge layout equal to the LP's or within 0.5 % of its lambda on 19 of 22; reference friction at
+or below the no-sliding lambda + 1 % on 21 of 22 (free Sh06-Sd010, 1.5 % above it: see
+GUESS_BRACKET in dem.protocols). The bisection from (0.95, 1.01) x the LP gave, on the same
+machine: 5.0 % below to 0.1 % below, mean 0.86 %, 21 of 22 within 3 % (free Sh1-Sd025 -5.0 %), 20
+within 2 %, hinge layouts 20, reference 22 of 22. Near the threshold PyBullet's outcome is not
+monotonic in lambda, so which case misses changes with any last-bit change of the inputs or of the
+protocol: six runs of the same 22 cases (LP or scan start, ramp 0.5 or 1 s, before and after
+dem.engines.inputs, i.e. with different last bits, either first bracket) gave 19-21 of 22 within
+3 % and mean errors 0.69-1.63 %, and one case moved from +0.14 % to -5.5 %. Since
+dem.engines.inputs the same run gives the same numbers on an AVX-512 and an AVX2-only CPU. The previous defaults (dt 1 ms, 200 iterations, about the same cost per
 simulated second) were 0.3-5.1 % low, 8 of 22 beyond 3 %.
 """
 from __future__ import annotations

@@ -191,6 +191,22 @@ def test_case_key_holds_the_protocol_timing():
     assert case_key(other) != case_key(c)
 
 
+def test_map_cases_keep_their_own_first_bracket():
+    # the map bisects from MAP_GUESS_BRACKET (see there why), a case with another protocol from the
+    # tilt test's default; both are written in the case (and so in its key) and reach the protocol
+    from dem.protocols import GUESS_BRACKET, TiltProtocol
+    from dem.sweep import case_key
+    from specimens.geometry import PointedArch
+
+    arch = PointedArch.from_ratios(0.6, 0.15, 0.2)
+    c = fm.make_case("s", arch, "glued", 0.5, 1.0)
+    assert tuple(c["protocol"]["guess_bracket"]) == fm.MAP_GUESS_BRACKET != GUESS_BRACKET
+    assert fm._scaled_protocol(c["protocol"], 1.0).guess_bracket == fm.MAP_GUESS_BRACKET
+    full = fm.make_case("s", arch, "glued", 0.5, 1.0, protocol={"kind": "hold", "tol": 0.005, "start": "lp"})
+    assert fm._scaled_protocol(full["protocol"], 1.0).guess_bracket == TiltProtocol().guess_bracket == GUESS_BRACKET
+    assert case_key(full) != case_key({**full, "protocol": {**full["protocol"], "guess_bracket": [0.95, 1.01]}})
+
+
 # ----------------------------------------------------------------------------- CLI
 def _cli(argv, capsys):
     from dem.cli import main

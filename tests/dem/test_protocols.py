@@ -99,6 +99,43 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
         TiltProtocol(guess="lp")
 
 
+@pytest.mark.parametrize("truth, n_sims", [(0.99, 5), (0.973, 5), (0.96, 7), (1.02, 6)])
+def test_hold_first_bracket_costs(monkeypatch, truth, n_sims):
+    # inside GUESS_BRACKET the bisection reaches 0.5 % in 5 simulations (2 ends + 3 bisections); an
+    # end that is wrong costs one step outward and a 5 % bracket (4 bisections). Faked levels, bracketing only
+    from types import SimpleNamespace
+
+    import dem.protocols as pr
+    from dem.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
+    levels = []
+
+    def fake_hold(model, settings, proto, lam):
+        levels.append(lam)
+        return SimpleNamespace(collapsed=lam > truth, mode="rocking", joints=[])
+
+    monkeypatch.setattr(pr, "hold_level", fake_hold)
+    r = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005))
+    assert r.n_sims == n_sims and r.bracket[0] <= truth < r.bracket[1]
+    assert r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
+    levels.clear()
+    wide = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005, guess_bracket=[0.95, 1.01]))
+    assert levels[:2] == [1.01, 0.95 if truth < 1.01 else 1.01 * pr.GUESS_STEPS[0]]
+    assert wide.protocol.guess_bracket == (0.95, 1.01)
+    assert wide.bracket[0] <= truth < wide.bracket[1]
+
+
+@pytest.mark.parametrize("bad", [(1.01, 0.95), (0.0, 1.0), (0.9,), "lp", (0.9, float("inf"))])
+def test_bad_guess_bracket_is_an_input_error(bad):
+    from specimens.errors import ArchdemInputError
+
+    with pytest.raises(ArchdemInputError, match="guess_bracket"):
+        TiltProtocol(guess_bracket=bad)
+
+
 # ------------------------------------------------------------------------ the hold's rest rule
 def _level(model, settings, lam, **proto):
     from dem.protocols import hold_level

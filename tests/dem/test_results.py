@@ -50,9 +50,12 @@ def test_result_written_before_the_rest_rule_loads_as_held_the_full_time(tmp_pat
     p = save_result(result, tmp_path / "old.h5")
     with h5py.File(p, "r+") as f:
         d = json.loads(f.attrs["protocol"])
-        for k in ("rest_after", "rest_window", "rest_growth"):
+        for k in ("rest_after", "rest_window", "rest_growth", "guess_bracket"):
             d.pop(k)
         f.attrs["protocol"] = json.dumps(d)
         del f["stable"].attrs["t_rest"]
     r = load_result(p)
     assert r.protocol.rest_after is None and np.isnan(r.stable.t_rest)
+    # ... and, older than guess_bracket, it bisected from (0.95, 1.01) x the guess
+    assert r.protocol.guess_bracket == (0.95, 1.01)
+    assert load_result(save_result(result, tmp_path / "new.h5")).protocol.guess_bracket == result.protocol.guess_bracket
