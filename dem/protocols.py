@@ -261,9 +261,8 @@ def onset_time(model: Model, settings: Settings, sim: SimResult) -> float:
 # mean error 0.10 % against 0.24 %, 22 of 22 within 2 % both, hinges 20 both, reference 22 of 22 both.
 # The friction map keeps (0.95, 1.01) (MAP_GUESS_BRACKET in dem.friction_map: it reads the mode of
 # the collapsing level of a 2 % bracket, and the tighter bracket read it nearer the threshold).
-# Both ends of the
-# final bracket are simulated, but near the threshold PyBullet's outcome is not monotonic in
-# lambda (Sh06-Sd010 glued, no sliding, former dt 1 ms defaults, held 4 s: 0.932 and 0.95 x LP
+# Both ends of the final bracket are simulated, but near the threshold PyBullet's outcome is not
+# monotonic in lambda (Sh06-Sd010 glued, no sliding, former dt 1 ms defaults, held 4 s: 0.932 and 0.95 x LP
 # collapsed suddenly after 2-3 s at rest with 0.3 mm of deformation, while 0.94 and 0.96 held), so
 # the path of the bisection picks a point of that band (at those defaults the no-sliding
 # validation read -6.8 % there with this start, -2.1 % with the scan; not re-run at the new ones).
@@ -410,7 +409,6 @@ class TiltResult:
             "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
             "out_of_plane": self.out_of_plane, "result_file": self.result_file,
         }
-
 
 
 def lp_guess(assembly, settings: Settings) -> float | None:
