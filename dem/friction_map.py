@@ -52,6 +52,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from dem.protocols import FORMER_GUESS_BRACKET
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
@@ -70,7 +71,7 @@ MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protoco
 # common points moved (-1.9 to +1.5 %) and the DEM mu* against the LP's went from -1.7 to +0.8 % on
 # the 8 bracketed specimens to -2.2 to +13 % (Sh06-Sd015: mu = 0.4 read "mixed", a hinge+slide at L7
 # in a collapse at 0.99 x LP, where 1.01 x LP had read "rocking"; mu* 0.406 against 0.356, LP 0.359).
-MAP_GUESS_BRACKET = (0.95, 1.01)
+MAP_GUESS_BRACKET = FORMER_GUESS_BRACKET  # (0.95, 1.01)
 MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp", "guess_bracket": list(MAP_GUESS_BRACKET)}
 # the hold's timing, rest rule and first bracket, written out in every case (see make_case)
 CASE_PROTOCOL_FIELDS = ("ramp_time", "hold_time", "rest_after", "rest_window", "rest_growth", "guess_bracket")

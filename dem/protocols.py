@@ -267,6 +267,7 @@ def onset_time(model: Model, settings: Settings, sim: SimResult) -> float:
 # the path of the bisection picks a point of that band (at those defaults the no-sliding
 # validation read -6.8 % there with this start, -2.1 % with the scan; not re-run at the new ones).
 GUESS_BRACKET = (0.972, 1.01)
+FORMER_GUESS_BRACKET = (0.95, 1.01)  # the first bracket before guess_bracket (results written then)
 GUESS_STEPS = (1.05, 0.95)
 
 

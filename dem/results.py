@@ -18,7 +18,7 @@ import numpy as np
 from dem.atomic import atomic_path
 from dem.detect import JointState
 from dem.model import BaseSpec, BodySpec, JointSpec, Model
-from dem.protocols import History, SimResult, TiltProtocol, TiltResult
+from dem.protocols import FORMER_GUESS_BRACKET, History, SimResult, TiltProtocol, TiltResult
 from dem.settings import Settings
 
 FORMAT = "archdem-tilt-1"
@@ -125,8 +125,8 @@ def load_result(path: str | Path) -> TiltResult:
         return TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
             # a result written before the rest rule held every level its full hold_time, and one
-            # written before guess_bracket started from (0.95, 1.01) x the guess
-            TiltProtocol(**{"rest_after": None, "guess_bracket": (0.95, 1.01), **json.loads(f.attrs["protocol"])}),
+            # written before guess_bracket started from FORMER_GUESS_BRACKET x the guess
+            TiltProtocol(**{"rest_after": None, "guess_bracket": FORMER_GUESS_BRACKET, **json.loads(f.attrs["protocol"])}),
             float(f.attrs["lambda"]),
             tuple(float(x) for x in f.attrs["bracket"]), int(f.attrs["n_sims"]), float(f.attrs["wall_s"]),
             str(f.attrs["mode"]), [JointState(**d) for d in json.loads(f.attrs["joints"])],
