@@ -7,7 +7,7 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
 
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
                                       [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco] [--no-rest]
-                                      [--guess-bracket LO,HI]
+                                      [--guess-bracket LO,HI] [--probe-ends first|last]
 
 Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
 default protocol); ``--start scan`` starts it from the ramp scan instead;
@@ -15,7 +15,9 @@ default protocol); ``--start scan`` starts it from the ramp scan instead;
 it lasts (default: the protocol's); ``--no-rest`` holds every level the full hold time (no rest
 rule, ``TiltProtocol.rest_after = None``; files named ``..._norest``); ``--engine`` runs everything
 with the other engine (files named ``..._mujoco``); ``--guess-bracket LO,HI`` starts every bisection
-from (LO, HI) x the LP instead of ``TiltProtocol.guess_bracket`` (files named ``..._bracketLO-HI``).
+from (LO, HI) x the LP instead of ``TiltProtocol.guess_bracket`` (files named ``..._bracketLO-HI``);
+``--probe-ends first`` simulates both ends of that bracket before bisecting instead of
+``TiltProtocol.probe_ends`` (files named ``..._probefirst``).
 """
 from __future__ import annotations
 
@@ -58,8 +60,9 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, tuple[float, float] | None]) -> dict:
-    sid, config, start, with_drift, hold, ramp, engine, rest, bracket = job
+def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, tuple[float, float] | None,
+                   str | None]) -> dict:
+    sid, config, start, with_drift, hold, ramp, engine, rest, bracket, probe = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -75,7 +78,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, t
 
     timing = {k: v for k, v in (("hold_time", hold), ("ramp_time", ramp)) if v is not None}
     proto = TiltProtocol(start=start, **timing, **({} if rest else {"rest_after": None}),
-                         **({"guess_bracket": bracket} if bracket else {}))
+                         **({"guess_bracket": bracket} if bracket else {}), **({"probe_ends": probe} if probe else {}))
     # every held level: (lambda / LP, collapsed, time into the hold at collapse [s], time into the hold
     # at which it was ended at rest [s]; None if not), the LP being the
     # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
@@ -107,6 +110,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, t
     return {
         "id": sid, "config": config, "engine": engine, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
         "rest_after": proto.rest_after, "guess_bracket": list(proto.guess_bracket),
+        "probe_ends": proto.probe_ends,
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
@@ -156,6 +160,8 @@ def main() -> None:
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     ap.add_argument("--guess-bracket", dest="bracket", default=None, metavar="LO,HI",
                     help="first bracket x the LP (default: TiltProtocol.guess_bracket)")
+    ap.add_argument("--probe-ends", dest="probe", choices=("first", "last"), default=None,
+                    help="when the first bracket's ends are simulated (default: TiltProtocol.probe_ends)")
     a = ap.parse_args()
     bracket = tuple(float(x) for x in a.bracket.split(",")) if a.bracket else None
     if a.sensitivity:
@@ -168,10 +174,11 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine, a.rest, bracket) for c in a.configs.split(",") for s in ids]
+    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine, a.rest, bracket, a.probe) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
         + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") \
-        + (f"_bracket{bracket[0]:g}-{bracket[1]:g}" if bracket else "") + ("" if a.engine == "pybullet" else f"_{a.engine}")
+        + (f"_bracket{bracket[0]:g}-{bracket[1]:g}" if bracket else "") + (f"_probe{a.probe}" if a.probe else "") \
+        + ("" if a.engine == "pybullet" else f"_{a.engine}")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))

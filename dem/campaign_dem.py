@@ -67,13 +67,17 @@ def _record_plan(ctx: CampaignContext) -> list:
 # before), the full ones scaled by what the rule saved on the same machine: x 0.80 the tilt (the
 # 44 tilt tests of benchmarks/validate_dem.py, 206 s against 258 s) and x 0.79 the map
 # (benchmarks/bench_map.py --specimens all, 524 s against 661 s).
-# The full tilt value since the tilt test's first bracket (0.972, 1.01) x LP (TiltProtocol.guess_bracket):
-# the tilt step alone (--steps tilt) at machine_speed 1.61, 85.0 s for 22 tests.
+# The tilt values since the tilt test simulates the ends of its first bracket only when the bisection
+# ends on one (TiltProtocol.probe_ends) and the quick step runs the tilt test's protocol too: the tilt
+# step alone (--steps tilt), quick 32.5 s for 11 tests at machine_speed 1.24, full 53.2 s for 22
+# tests at 1.27 (the quick step's 11 tests on 2 workers leave one idle for the last one). The map
+# values since the map does the same: quick, the map step alone, 25.2 s and 22.9 s for 10 cases at
+# about 1.33; full, benchmarks/bench_map.py --specimens all, 345 s for 167 cases at about 1.28.
 UNIT_CORE_S = {
-    ("tilt", True): 11.3,  # one tilt test, bisected to 2 % from the map's LP bracket (4 simulations)
-    ("tilt", False): 9.1,  # ... to 0.5 %, from the tilt test's LP bracket (5 simulations)
-    ("map", True): 10.0,  # one map case (tilt to 2 %, LP-started bracket)
-    ("map", False): 9.0,
+    ("tilt", True): 9.1,  # one tilt test, bisected to 0.5 % from the LP bracket (3 simulations)
+    ("tilt", False): 7.2,
+    ("map", True): 6.9,  # one map case (tilt to 2 %, LP-started bracket, 2.5 simulations)
+    ("map", False): 6.1,
     ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %
     ("shake", False): 45.2,  # ... ceiling 6 x lambda and tol 1 %
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window
@@ -169,9 +173,10 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
 
     frictions = _tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
-    # quick: bisection to 2 % in lambda (the map's tolerance); full: 0.5 % (the tilt test's); both
-    # LP-started, the tilt test's default
-    proto = None if ctx.quick else {"kind": "hold", "tol": 0.005, "start": "lp"}
+    # the tilt test's protocol (LP-started bisection to 0.5 %, first-bracket ends simulated last), quick
+    # or not: 3 simulations per test on 20 of the 22 tests of the full step, where the friction map's
+    # protocol (2 %, both ends first; the quick step's until then) took 4
+    proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
     cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng)
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
     res = run_study(list(cases.values()), DEM_CASE, _studies(ctx) / "tilt.h5", workers=ctx.workers, resume=True,
@@ -253,7 +258,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
                    f"specimen, {ctx.engine}, at the reference friction"
                    + ("" if ctx.quick else f" and at mu = {NO_SLIDING:g} (no sliding)")
                    + ", next to the discrete static LP of the same linearised blocks"
-                   + (" (quick: lambda bisected to 2 %)." if ctx.quick else " (lambda bisected to 0.5 %)."),
+                   + " (lambda bisected to 0.5 %).",
         "tables": [{"name": "tilt", "title": "Virtual tilt test vs limit analysis", "csv": "tilt/tilt.csv"}],
         "figures": figures,
         "findings": findings,

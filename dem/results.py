@@ -125,8 +125,10 @@ def load_result(path: str | Path) -> TiltResult:
         return TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
             # a result written before the rest rule held every level its full hold_time, and one
-            # written before guess_bracket started from FORMER_GUESS_BRACKET x the guess
-            TiltProtocol(**{"rest_after": None, "guess_bracket": FORMER_GUESS_BRACKET, **json.loads(f.attrs["protocol"])}),
+            # written before guess_bracket started from FORMER_GUESS_BRACKET x the guess, before
+            # probe_ends simulated both ends first
+            TiltProtocol(**{"rest_after": None, "guess_bracket": FORMER_GUESS_BRACKET, "probe_ends": "first",
+                            **json.loads(f.attrs["protocol"])}),
             float(f.attrs["lambda"]),
             tuple(float(x) for x in f.attrs["bracket"]), int(f.attrs["n_sims"]), float(f.attrs["wall_s"]),
             str(f.attrs["mode"]), [JointState(**d) for d in json.loads(f.attrs["joints"])],

@@ -193,7 +193,8 @@ def test_case_key_holds_the_protocol_timing():
 
 def test_map_cases_keep_their_own_first_bracket():
     # the map bisects from MAP_GUESS_BRACKET (see there why), a case with another protocol from the
-    # tilt test's default; both are written in the case (and so in its key) and reach the protocol
+    # tilt test's default; both, and when the bracket's ends are simulated, are written in the case
+    # (and so in its key) and reach the protocol
     from dem.protocols import GUESS_BRACKET, TiltProtocol
     from dem.sweep import case_key
     from specimens.geometry import PointedArch
@@ -205,6 +206,9 @@ def test_map_cases_keep_their_own_first_bracket():
     full = fm.make_case("s", arch, "glued", 0.5, 1.0, protocol={"kind": "hold", "tol": 0.005, "start": "lp"})
     assert fm._scaled_protocol(full["protocol"], 1.0).guess_bracket == TiltProtocol().guess_bracket == GUESS_BRACKET
     assert case_key(full) != case_key({**full, "protocol": {**full["protocol"], "guess_bracket": [0.95, 1.01]}})
+    assert c["protocol"]["probe_ends"] == full["protocol"]["probe_ends"] == TiltProtocol().probe_ends == "last"
+    assert fm._scaled_protocol(c["protocol"], 1.0).probe_ends == "last"
+    assert case_key(full) != case_key({**full, "protocol": {**full["protocol"], "probe_ends": "first"}})
 
 
 # ----------------------------------------------------------------------------- CLI

@@ -56,7 +56,7 @@ def test_ramp_rate_insensitivity():
 
 def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
     # the LP start resolves the estimate from the assembly tilt() is given, stores it as the
-    # result's protocol.guess and simulates GUESS_BRACKET x LP first; the held levels are faked
+    # result's protocol.guess and bisects GUESS_BRACKET x LP; the held levels are faked
     # (collapse above a known threshold) so that only the bracketing logic runs
     from types import SimpleNamespace
 
@@ -82,7 +82,10 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
         tilt(model, settings, proto)
     r = tilt(model, settings, proto, assembly=asm)
     assert r.protocol.guess == lp and r.protocol.start == "lp"
-    assert levels[:2] == [pr.GUESS_BRACKET[1] * lp, pr.GUESS_BRACKET[0] * lp]
+    lo, hi = (x * lp for x in pr.GUESS_BRACKET)
+    # probe_ends "last": the midpoint first; the truth lies below the bracket, so the lower end is
+    # simulated once the bisection ends on it, collapses and moves the bracket down
+    assert levels[0] == pytest.approx(0.5 * (lo + hi)) and lo in levels and hi not in levels
     assert r.bracket[0] <= truth < r.bracket[1] and r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
     # the default start: the LP when the assembly is given, otherwise the ramp scan (faked here:
     # collapse detected 10 % above the truth); the result stores which one ran
@@ -99,10 +102,13 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
         TiltProtocol(guess="lp")
 
 
-@pytest.mark.parametrize("truth, n_sims", [(0.99, 5), (0.973, 5), (0.96, 7), (1.02, 6)])
-def test_hold_first_bracket_costs(monkeypatch, truth, n_sims):
-    # inside GUESS_BRACKET the bisection reaches 0.5 % in 5 simulations (2 ends + 3 bisections); an
-    # end that is wrong costs one step outward and a 5 % bracket (4 bisections). Faked levels, bracketing only
+@pytest.mark.parametrize("truth, n_last, n_first", [(0.99, 3, 5), (0.973, 4, 5), (0.96, 8, 7), (1.02, 8, 6)])
+def test_hold_first_bracket_costs(monkeypatch, truth, n_last, n_first):
+    # inside GUESS_BRACKET the bisection reaches 0.5 % in 3 bisections. probe_ends "first": 2 ends + 3
+    # = 5 simulations; "last" (the default): 3, plus an end the bisection ends on (0.973: every
+    # midpoint collapsed, 0.972 is simulated). An end that is wrong costs one step outward and a 5 %
+    # bracket (4 bisections): "first" 7 or 6, "last" 8 (the 3 first midpoints, the end, 4 more).
+    # Faked levels, bracketing only
     from types import SimpleNamespace
 
     import dem.protocols as pr
@@ -118,11 +124,18 @@ def test_hold_first_bracket_costs(monkeypatch, truth, n_sims):
         return SimpleNamespace(collapsed=lam > truth, mode="rocking", joints=[])
 
     monkeypatch.setattr(pr, "hold_level", fake_hold)
-    r = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005))
-    assert r.n_sims == n_sims and r.bracket[0] <= truth < r.bracket[1]
-    assert r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
+    for probe, n_sims in (("last", n_last), ("first", n_first)):
+        levels.clear()
+        r = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005, probe_ends=probe))
+        assert r.n_sims == n_sims == len(levels) and r.bracket[0] <= truth < r.bracket[1]
+        assert r.bracket[1] - r.bracket[0] <= 0.005 * r.bracket[1]
+        # both ends of the final bracket were simulated: the last stable and the first collapsing level
+        assert r.bracket[0] in levels and r.bracket[1] in levels
+        assert max(x for x in levels if x <= truth) == r.bracket[0]
+        assert min(x for x in levels if x > truth) == r.bracket[1]
     levels.clear()
-    wide = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005, guess_bracket=[0.95, 1.01]))
+    wide = tilt(from_assembly(asm), Settings(), TiltProtocol(guess=1.0, tol=0.005, guess_bracket=[0.95, 1.01],
+                                                             probe_ends="first"))
     assert levels[:2] == [1.01, 0.95 if truth < 1.01 else 1.01 * pr.GUESS_STEPS[0]]
     assert wide.protocol.guess_bracket == (0.95, 1.01)
     assert wide.bracket[0] <= truth < wide.bracket[1]
@@ -134,6 +147,8 @@ def test_bad_guess_bracket_is_an_input_error(bad):
 
     with pytest.raises(ArchdemInputError, match="guess_bracket"):
         TiltProtocol(guess_bracket=bad)
+    with pytest.raises(ArchdemInputError, match="probe_ends"):
+        TiltProtocol(probe_ends="never")
 
 
 # ------------------------------------------------------------------------ the hold's rest rule

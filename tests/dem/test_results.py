@@ -50,7 +50,7 @@ def test_result_written_before_the_rest_rule_loads_as_held_the_full_time(tmp_pat
     p = save_result(result, tmp_path / "old.h5")
     with h5py.File(p, "r+") as f:
         d = json.loads(f.attrs["protocol"])
-        for k in ("rest_after", "rest_window", "rest_growth", "guess_bracket"):
+        for k in ("rest_after", "rest_window", "rest_growth", "guess_bracket", "probe_ends"):
             d.pop(k)
         f.attrs["protocol"] = json.dumps(d)
         del f["stable"].attrs["t_rest"]
@@ -58,4 +58,7 @@ def test_result_written_before_the_rest_rule_loads_as_held_the_full_time(tmp_pat
     assert r.protocol.rest_after is None and np.isnan(r.stable.t_rest)
     # ... and, older than guess_bracket, it bisected from (0.95, 1.01) x the guess
     assert r.protocol.guess_bracket == (0.95, 1.01)
-    assert load_result(save_result(result, tmp_path / "new.h5")).protocol.guess_bracket == result.protocol.guess_bracket
+    # ... and, older than probe_ends, simulated both ends of it first
+    assert r.protocol.probe_ends == "first" != result.protocol.probe_ends
+    new = load_result(save_result(result, tmp_path / "new.h5")).protocol
+    assert (new.guess_bracket, new.probe_ends) == (result.protocol.guess_bracket, result.protocol.probe_ends)
