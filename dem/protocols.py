@@ -349,9 +349,9 @@ class TiltProtocol:
     #   (see GUESS_BRACKET for the measurement behind it)
     probe_ends: str = PROBE_ENDS  # hold: when the ends of the first bracket are simulated. "last": only if
     #   the bisection ends on one (until then an end is a guess; one that turns out wrong moves the
-    #   bracket outward as "first" does); "first": both before bisecting, upper end first (the friction
-    #   map, MAP_PROTOCOL; results written before this field). Both end on a bracket whose two ends were
-    #   simulated. See PROBE_ENDS for the measurement behind the default.
+    #   bracket outward as "first" does); "first": both before bisecting, upper end first (results
+    #   written before this field). Both end on a bracket whose two ends were simulated. See
+    #   PROBE_ENDS for the measurement behind the default.
     scan_rate: float = 0.25  # hold: rate of the first-estimate ramp [1/s]
     max_sims: int = 30
     step: float = 0.01  # staircase: lambda increment
@@ -521,7 +521,7 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
             lo *= down
             return False
 
-        if proto.probe_ends == "first":  # both ends before bisecting (the former way; the friction map)
+        if proto.probe_ends == "first":  # both ends before bisecting (the former way)
             while not probe_hi():
                 pass
             while ends["lo"] is None and not probe_lo() and n < proto.max_sims:
