@@ -60,9 +60,9 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, tuple[float, float] | None,
-                   str | None]) -> dict:
-    sid, config, start, with_drift, hold, ramp, engine, rest, bracket, probe = job
+def one(job: tuple[str, str, bool, str, dict]) -> dict:
+    """One specimen and configuration; ``job[4]``: TiltProtocol fields that differ from the defaults."""
+    sid, config, with_drift, engine, proto_kw = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -76,9 +76,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, t
     lp_ref = solve_lp(asm, 0.577, 1.0)
     t0 = time.perf_counter()
 
-    timing = {k: v for k, v in (("hold_time", hold), ("ramp_time", ramp)) if v is not None}
-    proto = TiltProtocol(start=start, **timing, **({} if rest else {"rest_after": None}),
-                         **({"guess_bracket": bracket} if bracket else {}), **({"probe_ends": probe} if probe else {}))
+    proto = TiltProtocol(**proto_kw)
     # every held level: (lambda / LP, collapsed, time into the hold at collapse [s], time into the hold
     # at which it was ended at rest [s]; None if not), the LP being the
     # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
@@ -108,7 +106,7 @@ def one(job: tuple[str, str, str, bool, float | None, float | None, str, bool, t
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config, engine=engine) if with_drift else float("nan")
     return {
-        "id": sid, "config": config, "engine": engine, "start": start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
+        "id": sid, "config": config, "engine": engine, "start": proto.start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
         "rest_after": proto.rest_after, "guess_bracket": list(proto.guess_bracket),
         "probe_ends": proto.probe_ends,
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
@@ -174,7 +172,10 @@ def main() -> None:
             print(r)
         return
     ids = SPECIMEN_IDS if a.ids == "all" else a.ids.split(",")
-    jobs = [(s, c, a.start, a.drift, a.hold, a.ramp, a.engine, a.rest, bracket, a.probe) for c in a.configs.split(",") for s in ids]
+    proto_kw = {"start": a.start, **{k: v for k, v in (("hold_time", a.hold), ("ramp_time", a.ramp), ("guess_bracket", bracket),
+                                                        ("probe_ends", a.probe)) if v is not None},
+                **({} if a.rest else {"rest_after": None})}
+    jobs = [(s, c, a.drift, a.engine, proto_kw) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
         + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") \
         + (f"_bracket{bracket[0]:g}-{bracket[1]:g}" if bracket else "") + (f"_probe{a.probe}" if a.probe else "") \

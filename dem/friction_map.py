@@ -62,8 +62,8 @@ RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the prot
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
 # Default protocol of a map tilt: hold-and-bisect to MAP_TILT_TOL, first bracket around the static
 # LP of the same blocks at the case's friction ("start": "lp", dem.protocols.tilt, also the tilt
-# test's default): 4 simulations per tilt instead of 7 from the ramp scan. The map's output is the
-# mode and mu*, where the saving matters.
+# test's default): 4 simulations per tilt instead of 7 from the ramp scan (2.5 since probe_ends,
+# below). The map's output is the mode and mu*, where the saving matters.
 # The map keeps the first bracket (0.95, 1.01) x LP, not the tilt test's tighter GUESS_BRACKET: it reads
 # the mode of the collapsing level of a 2 % bracket, and with (0.972, 1.01) that level lies nearer the
 # threshold. Measured (benchmarks/bench_map.py --specimens all, 167 cases, 2 cores, same machine):
@@ -185,9 +185,8 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     return {
         "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
-        # the ramp and hold times, the rest rule and the first bracket are written out so that a study
-        # made with other defaults is not resumed into (its cases get other keys and are recomputed
-        # beside the old ones)
+        # CASE_PROTOCOL_FIELDS are written out so that a study made with other defaults is not
+        # resumed into (its cases get other keys and are recomputed beside the old ones)
         "protocol": {**{k: _jsonable(getattr(default, k)) for k in CASE_PROTOCOL_FIELDS},
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),

@@ -488,7 +488,7 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
             est = proto.scan_rate * scan.t_collapse
             hi, lo = est, 0.85 * est
             up, down = 1.1, 0.85
-        ends: dict[str, SimResult | None] = {"lo": None, "hi": None}  # the bracket's ends, once simulated
+        # collapse / stable: the simulated upper / lower end of the bracket (None: not simulated yet)
 
         def run(lam: float) -> SimResult:
             nonlocal n
@@ -499,12 +499,12 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
 
         def probe_hi() -> bool:
             """Simulate the unsimulated upper end; False: it held, and the bracket moved up."""
-            nonlocal lo, hi
+            nonlocal lo, hi, collapse, stable
             r = run(hi)
             if r.collapsed:
-                ends["hi"] = r
+                collapse = r
                 return True
-            lo, ends["lo"] = hi, r
+            lo, stable = hi, r
             hi *= up
             if hi > proto.lam_max or n >= proto.max_sims:
                 raise ArchdemInputError(f"no collapse up to lambda = {hi:g} under held levels")
@@ -512,35 +512,34 @@ def tilt(model: Model, settings: Settings | None = None, protocol: TiltProtocol 
 
         def probe_lo() -> bool:
             """Simulate the unsimulated lower end; False: it collapsed, and the bracket moved down."""
-            nonlocal lo, hi
+            nonlocal lo, hi, collapse, stable
             r = run(lo)
             if not r.collapsed:
-                ends["lo"] = r
+                stable = r
                 return True
-            hi, ends["hi"] = lo, r
+            hi, collapse = lo, r
             lo *= down
             return False
 
         if proto.probe_ends == "first":  # both ends before bisecting (the former way)
             while not probe_hi():
                 pass
-            while ends["lo"] is None and not probe_lo() and n < proto.max_sims:
+            while stable is None and not probe_lo() and n < proto.max_sims:
                 pass
         while True:
             while (hi - lo) > proto.tol * hi and n < proto.max_sims:
                 mid = 0.5 * (lo + hi)
                 r = run(mid)
                 if r.collapsed:
-                    hi, ends["hi"] = mid, r
+                    hi, collapse = mid, r
                 else:
-                    lo, ends["lo"] = mid, r
+                    lo, stable = mid, r
             # "last": an end of the first bracket is an assumption until the bisection ends on it
-            if ends["hi"] is None and not probe_hi():
+            if collapse is None and not probe_hi():
                 continue
-            if ends["lo"] is None and n < proto.max_sims and not probe_lo():
+            if stable is None and n < proto.max_sims and not probe_lo():
                 continue
             break
-        collapse, stable = ends["hi"], ends["lo"]
         lam, bracket = hi, (lo, hi)
     elif proto.kind == "staircase":
         load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
