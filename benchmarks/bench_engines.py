@@ -4,13 +4,15 @@
   15-body specimen: 15 ... ~1000 bodies), median of repeats, and the scaling exponent (least
   squares slope of log time vs log bodies) per engine;
 * wall time of one hold-protocol tilt test per specimen per engine (reference friction);
+* wall time of one shake threshold per specimen per engine (one-cycle sine, scan + bisection);
 * peak resident memory of each measurement (each runs in a fresh process: ``ru_maxrss``).
 
 The load average of the machine is recorded before, during (after each measurement) and after.
 Writes benchmarks/results/engines.json and engines.md.
 
     python benchmarks/bench_engines.py [--repeats 3] [--copies 1,4,16,67] [--specimens all|IDs]
-                                       [--tilt-repeats 1] [--skip-tilt] [--engines pybullet,mujoco]
+                                       [--tilt-repeats 1] [--skip-tilt] [--skip-threshold]
+                                       [--threshold-freq 4] [--workers N] [--engines pybullet,mujoco]
 """
 from __future__ import annotations
 
@@ -90,6 +92,27 @@ def _tilt_time(engine: str, sid: str) -> dict:
             "wall_s": time.perf_counter() - t0, "peak_rss_mb": _peak_rss_mb(), "load_avg_1min": os.getloadavg()[0]}
 
 
+def _threshold_time(engine: str, sid: str, freq: float, workers: int) -> dict:
+    """One shake threshold (scan + bisection to 1 %) of a one-cycle sine, as ``archdem threshold``
+    runs it: scanned from the static onset lambda up to 5 x it, ``workers`` processes."""
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from dem.shake import ShakeProtocol
+    from dem.shake_domain import static_onset
+    from dem.thresholds import threshold
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    arch = get_specimen(sid).arch
+    s = Settings(engine=engine)
+    m = from_assembly(discretise(arch, config="glued"), name=sid)
+    lam = static_onset(arch, "glued", s.mu_joint, s.mu_base)
+    t0 = time.perf_counter()
+    th = threshold(m, freq, s, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=workers)
+    return {"engine": engine, "id": sid, "freq_hz": freq, "amplitude_g": th.amplitude_g, "n_sims": th.n_sims,
+            "wall_s": time.perf_counter() - t0, "workers": workers, "load_avg_1min": os.getloadavg()[0]}
+
+
 def _fresh(fn, *args):
     """Run ``fn(*args)`` in a new single-worker process (clean memory peak, no shared state)."""
     with ProcessPoolExecutor(1) as ex:
@@ -105,6 +128,7 @@ def _slope(x, y) -> float:
 def main() -> None:
     from dem.atomic import atomic_path
     from dem.provenance import package_version
+    from dem.settings import Settings
     from specimens.catalogue import select_specimens
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -115,6 +139,9 @@ def main() -> None:
     ap.add_argument("--specimens", default="all")
     ap.add_argument("--tilt-repeats", type=int, default=1)
     ap.add_argument("--skip-tilt", action="store_true")
+    ap.add_argument("--skip-threshold", action="store_true")
+    ap.add_argument("--threshold-freq", type=float, default=4.0, help="frequency of the threshold runs [Hz]")
+    ap.add_argument("--workers", type=int, default=None, help="processes of a threshold run (default: all cores)")
     ap.add_argument("--engines", default="pybullet,mujoco")
     ap.add_argument("--out", default=str(OUT / "engines.json"))
     a = ap.parse_args()
@@ -122,7 +149,8 @@ def main() -> None:
     copies = [int(c) for c in a.copies.split(",")]
     res: dict = {"specimen": SPECIMEN, "config": "glued", "engines": engines,
                  "versions": {e: package_version(e) for e in engines}, "cpu_count": os.cpu_count(),
-                 "load_avg_start": list(os.getloadavg()), "repeats": a.repeats, "protocol_dt_s": 1e-3}
+                 "load_avg_start": list(os.getloadavg()), "repeats": a.repeats,
+                 "protocol_dt_s": Settings().dt}
     if "mujoco" in engines:
         from dem.engines.mujoco_engine import DEFAULT_OPTIONS
 
@@ -146,7 +174,8 @@ def main() -> None:
                         "peak_rss_mb": max(r["peak_rss_mb"] for r in rs),
                         "build_s": statistics.median(r["build_s"] for r in rs),
                         "max_centroid_drift_mm": max(r["max_centroid_drift_mm"] for r in rs)})
-        scaling[e] = {"points": pts, "exponent": _slope([p["bodies"] for p in pts], [p["median_wall_per_sim_s"] for p in pts])}
+        slope = _slope([p["bodies"] for p in pts], [p["median_wall_per_sim_s"] for p in pts]) if len(pts) > 1 else None
+        scaling[e] = {"points": pts, "exponent": slope}
     res["per_simulated_second"] = scaling
     if len(engines) == 2:
         e1, e2 = engines
@@ -175,6 +204,22 @@ def main() -> None:
                                                 "geometric_mean": math.exp(statistics.fmean(math.log(r) for r in ratios))}}
         res["tilt_total_wall_s"] = {e: sum(per[s][e] for s in ids) for e in engines}
         res["raw_tilt"] = trows
+    # -- shake threshold per specimen (each on all cores, as archdem threshold runs it)
+    if not a.skip_threshold:
+        ids = [s.id for s in select_specimens(a.specimens)]
+        workers = a.workers or os.cpu_count() or 1
+        hrows = []
+        for sid in ids:
+            for e in engines:
+                hrows.append(_threshold_time(e, sid, a.threshold_freq, workers))
+                print(json.dumps(hrows[-1]), flush=True)
+        res["threshold_wall_s"] = {sid: {r["engine"]: r["wall_s"] for r in hrows if r["id"] == sid} for sid in ids}
+        if len(engines) == 2:
+            e1, e2 = engines
+            ratios = [res["threshold_wall_s"][s][e2] / res["threshold_wall_s"][s][e1] for s in ids]
+            res["ratio_threshold"] = {f"{e2}/{e1}": {"per_specimen": dict(zip(ids, ratios)),
+                                                     "median": statistics.median(ratios)}}
+        res["raw_threshold"] = hrows
     res["load_avg_end"] = list(os.getloadavg())
     res["wall_s"] = time.perf_counter() - t_start
     out = Path(a.out)
@@ -206,8 +251,10 @@ def markdown(res: dict) -> str:
             cells.append(f"{q['median_wall_per_sim_s']:.3g} | {q['wall_per_step_ms']:.3g} | {q['peak_rss_mb']:.0f}")
         r = f"{ratio[0][k]['ratio']:.2f}" if ratio else ""
         lines.append(f"| {p['bodies']} | " + " | ".join(cells) + f" | {r} |")
-    lines += ["", "Scaling exponent (log-log slope of cost vs bodies): "
-              + ", ".join(f"{e} {sc[e]['exponent']:.2f}" for e in eng), ""]
+    if sc[eng[0]]["exponent"] is not None:
+        lines += ["", "Scaling exponent (log-log slope of cost vs bodies): "
+                  + ", ".join(f"{e} {sc[e]['exponent']:.2f}" for e in eng)]
+    lines.append("")
     if "tilt_wall_s" in res:
         lines += ["## Tilt test (hold protocol, reference friction) wall time [s]", "",
                   "| specimen | " + " | ".join(eng) + " | ratio |", "|---" * (len(eng) + 2) + "|"]
@@ -219,6 +266,21 @@ def markdown(res: dict) -> str:
             lines += ["", f"Median tilt time ratio {list(res['ratio_tilt'])[0]}: {rt[0]['median']:.2f}"]
         lines += ["", "Total (campaign of the listed specimens, one process): "
                   + ", ".join(f"{e} {t:.0f} s" for e, t in res["tilt_total_wall_s"].items())]
+    if "threshold_wall_s" in res:
+        raw = res["raw_threshold"]
+        lines += ["", f"## Shake threshold ({raw[0]['freq_hz']:g} Hz one-cycle sine, scan + bisection to 1 %, "
+                  f"{raw[0]['workers']} processes) wall time [s] and amplitude [g]", "",
+                  "| specimen | " + " | ".join(f"{e} [s] | {e} [g] | {e} runs" for e in eng) + " | ratio |",
+                  "|---" * (3 * len(eng) + 2) + "|"]
+        rh = list(res.get("ratio_threshold", {}).values())
+        for sid, v in res["threshold_wall_s"].items():
+            rows = {r["engine"]: r for r in raw if r["id"] == sid}
+            amp = lambda a: "none" if a is None else f"{a:.3f}"  # noqa: E731
+            cells = [f"{v[e]:.1f} | {amp(rows[e]['amplitude_g'])} | {rows[e]['n_sims']}" for e in eng]
+            r = f"{rh[0]['per_specimen'][sid]:.2f}" if rh else ""
+            lines.append(f"| {sid} | " + " | ".join(cells) + f" | {r} |")
+        if rh:
+            lines += ["", f"Median threshold time ratio {list(res['ratio_threshold'])[0]}: {rh[0]['median']:.2f}"]
     return "\n".join(lines) + "\n"
 
 

@@ -46,7 +46,7 @@ import math
 import os
 import time
 import uuid
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any, Sequence
 
@@ -201,15 +201,7 @@ def _scaled_protocol(d: dict, s: float):
     unknown = set(d) - names
     if unknown:
         raise ArchdemInputError(f"unknown tilt protocol fields: {sorted(unknown)}")
-    p = TiltProtocol(**d)
-    kw = {}
-    for k in ("ramp_time", "hold_time", "stair_hold", "rest_after", "rest_window"):
-        if k in names and getattr(p, k) is not None:
-            kw[k] = getattr(p, k) * s
-    for k in ("scan_rate", "rate"):
-        if k in names:
-            kw[k] = getattr(p, k) / s
-    return TiltProtocol(**{**asdict(p), **kw})
+    return TiltProtocol(**d).slowed(s)
 
 
 def _scaled_settings(case: dict):

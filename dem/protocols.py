@@ -391,6 +391,14 @@ class TiltProtocol:
             raise ArchdemInputError(f"tilt protocol guess_bracket must satisfy 0 < low < high, got {self.guess_bracket!r}")
         object.__setattr__(self, "guess_bracket", (lo, hi))
 
+    def slowed(self, factor: float) -> "TiltProtocol":
+        """The same protocol run ``factor`` times slower: every duration (ramp, hold, staircase
+        step, and the rest rule's start and window) x factor, every rate / factor."""
+        durations = ("ramp_time", "hold_time", "stair_hold", "rest_after", "rest_window")
+        kw = {k: getattr(self, k) * factor for k in durations if getattr(self, k) is not None}
+        kw.update({k: getattr(self, k) / factor for k in ("scan_rate", "rate")})
+        return replace(self, **kw)
+
 
 @dataclass
 class TiltResult:

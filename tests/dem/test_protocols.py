@@ -151,6 +151,17 @@ def test_bad_guess_bracket_is_an_input_error(bad):
         TiltProtocol(probe_ends="never")
 
 
+def test_slowed_protocol_scales_every_duration_and_rate():
+    p = TiltProtocol()
+    s = p.slowed(2.0)
+    for k in ("ramp_time", "hold_time", "stair_hold", "rest_after", "rest_window"):
+        assert getattr(s, k) == 2 * getattr(p, k), k
+    assert (s.scan_rate, s.rate) == (p.scan_rate / 2, p.rate / 2)
+    # levels, tolerances and the rest rule's relative growth are not times
+    assert (s.tol, s.step, s.guess_bracket, s.rest_growth) == (p.tol, p.step, p.guess_bracket, p.rest_growth)
+    assert TiltProtocol(rest_after=None).slowed(3.0).rest_after is None
+
+
 # ------------------------------------------------------------------------ the hold's rest rule
 def _level(model, settings, lam, **proto):
     from dem.protocols import hold_level
