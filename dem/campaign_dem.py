@@ -73,13 +73,16 @@ def _record_plan(ctx: CampaignContext) -> list:
 # tests at 1.27 (the quick step's 11 tests on 2 workers leave one idle for the last one). The map
 # values since the map does the same: quick, the map step alone, 25.2 s and 22.9 s for 10 cases at
 # about 1.33; full, benchmarks/bench_map.py --specimens all, 345 s for 167 cases at about 1.28.
+# The shake values since a shake run ends once at rest after the motion (ShakeProtocol.rest_after):
+# the shake step alone, quick 20.4 s for 2 thresholds at machine_speed 1.28, full 339.3 s for 30 at
+# 1.26 (458 s without the rule, same machine).
 UNIT_CORE_S = {
     ("tilt", True): 9.1,  # one tilt test, bisected to 0.5 % from the LP bracket (3 simulations)
     ("tilt", False): 7.2,
     ("map", True): 6.9,  # one map case (tilt to 2 %, LP-started bracket, 2.5 simulations)
     ("map", False): 6.1,
-    ("shake", True): 36.6,  # one threshold (scan + bisection) at one frequency, tol 2 %
-    ("shake", False): 45.2,  # ... ceiling 6 x lambda and tol 1 %
+    ("shake", True): 30.3,  # one threshold (scan + bisection) at one frequency, tol 2 %
+    ("shake", False): 34.1,  # ... ceiling 6 x lambda and tol 1 %
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window
     ("record", False): 209.8,  # ... 7 s window, tol 1 %
 }

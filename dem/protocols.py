@@ -115,14 +115,15 @@ def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray, base_
 
 def simulate(model: Model, settings: Settings, load: Load, duration: float, record_every: float | None = None,
              stop_on_collapse: bool = True, friction_work: bool = True, engine=None,
-             rest: tuple[float, float, float] | None = None) -> SimResult:
+             rest: tuple[float, float, float] | None = None, rest_span: bool = False) -> SimResult:
     """Run ``load`` on ``model`` for ``duration`` [s]; stop at collapse if ``stop_on_collapse``.
 
     ``record_every`` [s] defaults to ``settings.record_every``; the collapse criterion is
     checked at each record. ``engine``: an unbuilt backend (default: ``settings.engine``).
     ``rest = (t_from, window, growth)`` [s, s, m]: from ``t_from`` on, end the run (not collapsed,
     ``t_rest`` set) at the first record at which the largest displacement grew by less than
-    ``growth`` over the last ``window``.
+    ``growth`` over the last ``window`` (``rest_span``: varied by less than ``growth``, i.e. its
+    largest minus its smallest value over the window, which a swing back also fails).
     A load with ``driven_base`` (a ground motion) moves the base by the ground displacement
     (velocity and displacement integrated with the engine's own symplectic Euler, so that the
     relative motion matches the inertial field step for step) under plain gravity; poses and
@@ -201,7 +202,7 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
                 if stop_on_collapse:
                     break
             if (rest is not None and not collapsed and step * settings.dt >= rest_from - 1e-9 and len(D) > rest_k
-                    and D[-1] - D[-1 - rest_k] < rest_growth):
+                    and (np.ptp(D[-1 - rest_k:]) if rest_span else D[-1] - D[-1 - rest_k]) < rest_growth):
                 t_rest = step * settings.dt
                 break
     finally:

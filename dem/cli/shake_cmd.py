@@ -70,7 +70,8 @@ def _run_shake(args: argparse.Namespace) -> int:
 
     motion = _motion(args)
     label, _, _, model, settings = _model_and_settings(args)
-    proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full, load=args.load)
+    proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full, load=args.load,
+                          **({"rest_after": None} if args.full else {}))
     out = writable_dir(args.out)
     if args.plot:
         writable_file(args.plot, overwrite=False)
@@ -157,7 +158,8 @@ def register(sub) -> None:
     p.add_argument("--pga", type=float, default=None, metavar="A_G", help="scale the record to this PGA [g]")
     p.add_argument("--baseline", action="store_true", help="baseline-correct the record (linear velocity fit)")
     p.add_argument("--duration", type=float, default=None, help="simulated time [s] (default: motion + tail)")
-    p.add_argument("--full", action="store_true", help="keep simulating after collapse (default: stop)")
+    p.add_argument("--full", action="store_true",
+                   help="simulate the whole duration (default: stop at collapse, or once at rest after the motion)")
     p.add_argument("--out", default="runs/shake", help="directory for the run file (default runs/shake)")
     p.add_argument("--plot", default=None, help="time-history figure (.png/.pdf/.svg)")
     p.set_defaults(func=_run_shake)

@@ -111,3 +111,33 @@ def test_skipping_the_friction_readout_leaves_the_run_unchanged(block):
     assert math.isfinite(a.sim.history.friction_work) and math.isnan(b.sim.history.friction_work)
     assert (a.collapsed, a.mode) == (b.collapsed, b.mode)
     np.testing.assert_array_equal(a.sim.history.pos, b.sim.history.pos)
+
+
+@pytest.mark.parametrize("amp_g, freq", [(0.2, 4.0), (0.32, 3.0)])
+def test_a_run_ends_once_at_rest_after_the_motion(block, amp_g, freq):
+    """The end-at-rest rule (ShakeProtocol.rest_after) only cuts a survived run short: the run is
+    the same step for step up to the end, with the same outcome and residual displacement as the
+    whole duration simulated. 0.2 g is below the rocking onset g b/h = 0.25 g; at 0.32 g, 3 Hz
+    (10 % below the overturning amplitude 0.354 g, see above) the block rocks and survives: it
+    rocks until about 2.7 s (swings of 31 mm at the top corner, each apex at rest for an instant:
+    the rule looks at 0.1 s), then stands."""
+    proto = ShakeProtocol(tail=4.0)
+    cut = shake(block, SinePulse(amp_g * G, freq), SETTINGS, proto)
+    whole = shake(block, SinePulse(amp_g * G, freq), SETTINGS, ShakeProtocol(tail=4.0, rest_after=None))
+    assert not whole.collapsed and not cut.collapsed and math.isnan(whole.sim.t_rest)
+    t_end = 1.0 / freq + proto.rest_after
+    assert t_end <= cut.sim.t_rest < whole.sim.history.t[-1]
+    n = len(cut.sim.history.t)
+    np.testing.assert_array_equal(cut.sim.history.pos, whole.sim.history.pos[:n])
+    # at rest: what is left of the run moves the crown by less than the rule's span (3e-4 x size)
+    span = proto.rest_span * block.size
+    assert abs(cut.residual_crown_mm - whole.residual_crown_mm) < 1e3 * span
+    assert cut.summary()["t_end_at_rest"] == cut.sim.t_rest
+
+
+def test_bad_rest_rule_is_an_input_error():
+    from specimens.errors import ArchdemInputError
+
+    for kw in ({"rest_after": -0.1}, {"rest_window": 0.0}, {"rest_span": float("nan")}):
+        with pytest.raises(ArchdemInputError, match="rest"):
+            ShakeProtocol(**kw)
