@@ -11,8 +11,9 @@ The load average of the machine is recorded before, during (after each measureme
 Writes benchmarks/results/engines.json and engines.md.
 
     python benchmarks/bench_engines.py [--repeats 3] [--copies 1,4,16,67] [--specimens all|IDs]
-                                       [--tilt-repeats 1] [--skip-tilt] [--skip-threshold]
-                                       [--threshold-freq 4] [--workers N] [--engines pybullet,mujoco]
+                                       [--tilt-repeats 3] [--skip-tilt] [--threshold-repeats 3]
+                                       [--skip-threshold] [--threshold-freq 4] [--workers N]
+                                       [--engines pybullet,mujoco]
 """
 from __future__ import annotations
 
@@ -137,8 +138,9 @@ def main() -> None:
     ap.add_argument("--sim-seconds", type=float, default=None,
                     help="simulated seconds per measurement (default: 1 s up to 60 bodies, then 0.2 s)")
     ap.add_argument("--specimens", default="all")
-    ap.add_argument("--tilt-repeats", type=int, default=1)
+    ap.add_argument("--tilt-repeats", type=int, default=3)
     ap.add_argument("--skip-tilt", action="store_true")
+    ap.add_argument("--threshold-repeats", type=int, default=3)
     ap.add_argument("--skip-threshold", action="store_true")
     ap.add_argument("--threshold-freq", type=float, default=4.0, help="frequency of the threshold runs [Hz]")
     ap.add_argument("--workers", type=int, default=None, help="processes of a threshold run (default: all cores)")
@@ -149,7 +151,8 @@ def main() -> None:
     copies = [int(c) for c in a.copies.split(",")]
     res: dict = {"specimen": SPECIMEN, "config": "glued", "engines": engines,
                  "versions": {e: package_version(e) for e in engines}, "cpu_count": os.cpu_count(),
-                 "load_avg_start": list(os.getloadavg()), "repeats": a.repeats,
+                 "load_avg_start": list(os.getloadavg()), "repeats": a.repeats, "tilt_repeats": a.tilt_repeats,
+                 "threshold_repeats": a.threshold_repeats,
                  "protocol_dt_s": Settings().dt}
     if "mujoco" in engines:
         from dem.engines.mujoco_engine import DEFAULT_OPTIONS
@@ -210,10 +213,12 @@ def main() -> None:
         workers = a.workers or os.cpu_count() or 1
         hrows = []
         for sid in ids:
-            for e in engines:
-                hrows.append(_threshold_time(e, sid, a.threshold_freq, workers))
-                print(json.dumps(hrows[-1]), flush=True)
-        res["threshold_wall_s"] = {sid: {r["engine"]: r["wall_s"] for r in hrows if r["id"] == sid} for sid in ids}
+            for _ in range(a.threshold_repeats):
+                for e in engines:
+                    hrows.append(_threshold_time(e, sid, a.threshold_freq, workers))
+                    print(json.dumps(hrows[-1]), flush=True)
+        res["threshold_wall_s"] = {sid: {e: statistics.median(r["wall_s"] for r in hrows if r["id"] == sid and r["engine"] == e)
+                                         for e in engines} for sid in ids}
         if len(engines) == 2:
             e1, e2 = engines
             ratios = [res["threshold_wall_s"][s][e2] / res["threshold_wall_s"][s][e1] for s in ids]
@@ -256,7 +261,7 @@ def markdown(res: dict) -> str:
                   + ", ".join(f"{e} {sc[e]['exponent']:.2f}" for e in eng)]
     lines.append("")
     if "tilt_wall_s" in res:
-        lines += ["## Tilt test (hold protocol, reference friction) wall time [s]", "",
+        lines += [f"## Tilt test (hold protocol, reference friction) wall time [s], median of {res.get('tilt_repeats', 1)}", "",
                   "| specimen | " + " | ".join(eng) + " | ratio |", "|---" * (len(eng) + 2) + "|"]
         rt = list(res.get("ratio_tilt", {}).values())
         for sid, v in res["tilt_wall_s"].items():
@@ -269,7 +274,7 @@ def markdown(res: dict) -> str:
     if "threshold_wall_s" in res:
         raw = res["raw_threshold"]
         lines += ["", f"## Shake threshold ({raw[0]['freq_hz']:g} Hz one-cycle sine, scan + bisection to 1 %, "
-                  f"{raw[0]['workers']} processes) wall time [s] and amplitude [g]", "",
+                  f"{raw[0]['workers']} processes) wall time [s] (median of {res.get('threshold_repeats', 1)}) and amplitude [g]", "",
                   "| specimen | " + " | ".join(f"{e} [s] | {e} [g] | {e} runs" for e in eng) + " | ratio |",
                   "|---" * (3 * len(eng) + 2) + "|"]
         rh = list(res.get("ratio_threshold", {}).values())
