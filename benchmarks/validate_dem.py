@@ -33,7 +33,7 @@ import numpy as np
 OUT = Path(__file__).resolve().parent / "results"
 
 
-def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet") -> float:
+def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet", **settings_kw) -> float:
     """Largest displacement of any body point after ``seconds`` at rest [m]."""
     from dem.load import Rest
     from dem.model import from_assembly
@@ -43,7 +43,7 @@ def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybul
     from specimens.catalogue import get_specimen
 
     m = from_assembly(discretise(get_specimen(sid).arch, config=config), name=sid)
-    r = simulate(m, Settings(engine=engine), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
+    r = simulate(m, Settings(engine=engine, **settings_kw), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
     return float(r.history.dmax.max())
 
 
@@ -60,9 +60,10 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, bool, str, dict]) -> dict:
-    """One specimen and configuration; ``job[4]``: TiltProtocol fields that differ from the defaults."""
-    sid, config, with_drift, engine, proto_kw = job
+def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
+    """One specimen and configuration; ``job[4]``: TiltProtocol fields that differ from the defaults;
+    ``job[5]``: Settings fields that differ from the defaults (other than friction and engine)."""
+    sid, config, with_drift, engine, proto_kw, settings_kw = job
     from analytic.limit_discrete import solve_lp
     from dem.model import from_assembly
     from dem.protocols import TiltProtocol, tilt
@@ -100,15 +101,15 @@ def one(job: tuple[str, str, bool, str, dict]) -> dict:
         finally:
             protocols.hold_level = hold_level
 
-    ns, levels = logged_tilt(Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, engine=engine), lp.lam)
-    ref, levels_ref = logged_tilt(Settings(engine=engine), lp_ref.lam)
+    ns, levels = logged_tilt(Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, engine=engine, **settings_kw), lp.lam)
+    ref, levels_ref = logged_tilt(Settings(engine=engine, **settings_kw), lp_ref.lam)
     hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
-    drift = rest_drift(sid, config, engine=engine) if with_drift else float("nan")
+    drift = rest_drift(sid, config, engine=engine, **settings_kw) if with_drift else float("nan")
     return {
         "id": sid, "config": config, "engine": engine, "start": proto.start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
         "rest_after": proto.rest_after, "guess_bracket": list(proto.guess_bracket),
-        "probe_ends": proto.probe_ends,
+        "probe_ends": proto.probe_ends, "settings": ns.settings.to_dict(),
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
         "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
@@ -158,6 +159,7 @@ def main() -> None:
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     ap.add_argument("--guess-bracket", dest="bracket", default=None, metavar="LO,HI",
                     help="first bracket x the LP (default: TiltProtocol.guess_bracket)")
+    ap.add_argument("--iterations", type=int, default=None, help="solver iterations per step (default: Settings')")
     ap.add_argument("--probe-ends", dest="probe", choices=("first", "last"), default=None,
                     help="when the first bracket's ends are simulated (default: TiltProtocol.probe_ends)")
     a = ap.parse_args()
@@ -175,11 +177,12 @@ def main() -> None:
     proto_kw = {"start": a.start, **{k: v for k, v in (("hold_time", a.hold), ("ramp_time", a.ramp), ("guess_bracket", bracket),
                                                         ("probe_ends", a.probe)) if v is not None},
                 **({} if a.rest else {"rest_after": None})}
-    jobs = [(s, c, a.drift, a.engine, proto_kw) for c in a.configs.split(",") for s in ids]
+    settings_kw = {} if a.iterations is None else {"solver_iterations": a.iterations}
+    jobs = [(s, c, a.drift, a.engine, proto_kw, settings_kw) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
         + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") \
         + (f"_bracket{bracket[0]:g}-{bracket[1]:g}" if bracket else "") + (f"_probe{a.probe}" if a.probe else "") \
-        + ("" if a.engine == "pybullet" else f"_{a.engine}")
+        + (f"_it{a.iterations}" if a.iterations else "") + ("" if a.engine == "pybullet" else f"_{a.engine}")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))
