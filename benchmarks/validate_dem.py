@@ -7,7 +7,7 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
 
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
                                       [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco] [--no-rest]
-                                      [--guess-bracket LO,HI] [--probe-ends first|last]
+                                      [--guess-bracket LO,HI] [--probe-ends first|last] [--iterations N]
 
 Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
 default protocol); ``--start scan`` starts it from the ramp scan instead;
@@ -17,7 +17,9 @@ rule, ``TiltProtocol.rest_after = None``; files named ``..._norest``); ``--engin
 with the other engine (files named ``..._mujoco``); ``--guess-bracket LO,HI`` starts every bisection
 from (LO, HI) x the LP instead of ``TiltProtocol.guess_bracket`` (files named ``..._bracketLO-HI``);
 ``--probe-ends first`` simulates both ends of that bracket before bisecting instead of
-``TiltProtocol.probe_ends`` (files named ``..._probefirst``).
+``TiltProtocol.probe_ends`` (files named ``..._probefirst``); ``--iterations N`` runs every
+simulation with N solver iterations per step instead of ``Settings.solver_iterations`` (files
+named ``..._itN``).
 """
 from __future__ import annotations
 
