@@ -16,3 +16,27 @@ def report(name: str, res: dict, digits: int = 3) -> Path:
         tmp.write_text(json.dumps(res, indent=2))
     print(f"written {out.name}")
     return out
+
+
+def timed_threshold(sid: str, freq: float, engine: str = "pybullet", workers: int = 2, config: str = "glued"):
+    """One shake threshold of a one-cycle sine at ``freq`` [Hz], as ``archdem threshold`` runs it:
+    scanned from the static onset lambda (LP, reference friction) up to 5 x it, bisected to 1 %, on
+    ``workers`` processes. Returns ``(ThresholdResult, lambda, wall_s)``; the wall time leaves out
+    the LP and the model build."""
+    import time
+
+    from dem.model import from_assembly
+    from dem.settings import Settings
+    from dem.shake import ShakeProtocol
+    from dem.shake_domain import static_onset
+    from dem.thresholds import threshold
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    arch = get_specimen(sid).arch
+    st = Settings(engine=engine)
+    model = from_assembly(discretise(arch, config=config), name=sid)
+    lam = static_onset(arch, config, st.mu_joint, st.mu_base)
+    t0 = time.perf_counter()
+    th = threshold(model, freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=workers)
+    return th, lam, time.perf_counter() - t0

@@ -94,24 +94,11 @@ def _tilt_time(engine: str, sid: str) -> dict:
 
 
 def _threshold_time(engine: str, sid: str, freq: float, workers: int) -> dict:
-    """One shake threshold (scan + bisection to 1 %) of a one-cycle sine, as ``archdem threshold``
-    runs it: scanned from the static onset lambda up to 5 x it, ``workers`` processes."""
-    from dem.model import from_assembly
-    from dem.settings import Settings
-    from dem.shake import ShakeProtocol
-    from dem.shake_domain import static_onset
-    from dem.thresholds import threshold
-    from specimens.blocks import discretise
-    from specimens.catalogue import get_specimen
+    from _common import timed_threshold
 
-    arch = get_specimen(sid).arch
-    s = Settings(engine=engine)
-    m = from_assembly(discretise(arch, config="glued"), name=sid)
-    lam = static_onset(arch, "glued", s.mu_joint, s.mu_base)
-    t0 = time.perf_counter()
-    th = threshold(m, freq, s, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=workers)
+    th, _, wall = timed_threshold(sid, freq, engine, workers)
     return {"engine": engine, "id": sid, "freq_hz": freq, "amplitude_g": th.amplitude_g, "n_sims": th.n_sims,
-            "wall_s": time.perf_counter() - t0, "workers": workers, "load_avg_1min": os.getloadavg()[0]}
+            "wall_s": wall, "workers": workers, "load_avg_1min": os.getloadavg()[0]}
 
 
 def _fresh(fn, *args):

@@ -13,6 +13,8 @@ import statistics
 import time
 from pathlib import Path
 
+from _common import timed_threshold
+
 OUT = Path(__file__).resolve().parent / "results"
 
 
@@ -21,8 +23,6 @@ def main() -> None:
     from dem.model import from_assembly
     from dem.settings import Settings
     from dem.shake import ShakeProtocol, shake
-    from dem.shake_domain import static_onset
-    from dem.thresholds import threshold
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -46,10 +46,8 @@ def main() -> None:
                      "collapsed": r.collapsed})
     res["one_shake_1.5s"] = {"input": f"sine {a.freq:g} Hz 0.3 g", "median_wall_s": statistics.median(x["wall_s"] for x in runs),
                              "target_s": 1.0, "runs": runs}
-    lam = static_onset(arch, "glued", st.mu_joint, st.mu_base)
-    t0 = time.perf_counter()
-    th = threshold(model, a.freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=2)
-    res["one_threshold_2_cores"] = {"freq": a.freq, "wall_s": time.perf_counter() - t0, "target_s": 20.0,
+    th, lam, wall = timed_threshold(a.id, a.freq, workers=2)
+    res["one_threshold_2_cores"] = {"freq": a.freq, "wall_s": wall, "target_s": 20.0,
                                     "amplitude_g": th.amplitude_g, "bracket_g": th.bracket_g, "n_sims": th.n_sims,
                                     "survival_bands_above": th.survival_bands_above, "static_lambda": lam}
     res["load_average_at_end"] = list(os.getloadavg())
