@@ -19,7 +19,8 @@ from typing import Sequence
 import numpy as np
 
 from analytic.dynamics import linearised_collapse, simulate
-from analytic.inputs import G, GroundMotion, PulseA, PulseB, SinePulse
+from specimens.constants import G
+from analytic.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.mechanism import Mechanism
 from specimens.errors import ArchdemInputError
 

@@ -7,30 +7,27 @@ import numpy as np
 
 from analytic.domain import FailureDomain
 from analytic.dynamics import Response
-from analytic.inputs import G
+from specimens.constants import G
 
 
 def _save(fig, path: str | Path, overwrite: bool = False) -> Path:
-    from dem.atomic import atomic_path
+    from specimens.io import atomic_path
 
     path = Path(path)
     fmt = path.suffix.lstrip(".") or "png"
     with atomic_path(path, overwrite=overwrite) as tmp:
         fig.savefig(tmp, format=fmt, dpi=130, bbox_inches="tight")
-    import matplotlib.pyplot as plt
 
-    plt.close(fig)
     return path
 
 
 def plot_response(resp: Response, path: str | Path, title: str = "", input_end: float | None = None,
                   overwrite: bool = False) -> Path:
     """Rotation / phi_cr against time, impacts marked, input end and collapse shown."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
-    fig, ax = plt.subplots(figsize=(7, 3.6))
+    fig = Figure(figsize=(7, 3.6))
+    ax = fig.subplots()
     ax.plot(resp.t, resp.ratio, lw=1.2, color="C0", label="phi / phi_cr")
     for k, imp in enumerate(resp.impacts):
         ax.axvline(imp.t, color="0.6", lw=0.6, ls=":", label="impact" if k == 0 else None)
@@ -50,14 +47,13 @@ def plot_response(resp: Response, path: str | Path, title: str = "", input_end: 
 
 def plot_domain(dom: FailureDomain, path: str | Path, title: str = "", overwrite: bool = False) -> Path:
     """Failure domain: collapse bands (both modes) and survival, amplitude in g; normalised twin axis."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
     colours = {"survival": "#d9f0d3", "first-half-cycle": "#f4a582", "after-impact": "#ca0020"}
     xs = np.array([c.x for c in dom.columns])
     w = np.diff(xs).min() if len(xs) > 1 else 0.1 * xs[0]
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+    fig = Figure(figsize=(7, 4.2))
+    ax = fig.subplots()
     seen = set()
     for c in dom.columns:
         for b in c.bands:

@@ -12,25 +12,25 @@ from pathlib import Path
 
 import numpy as np
 
-from dem.atomic import atomic_path, unique_run_path
+from specimens.io import atomic_path, unique_run_path
 
 
 def _save(fig, out_dir: Path, stem: str) -> Path:
     target = unique_run_path(out_dir, stem, ".png")
     with atomic_path(target) as tmp:
         fig.savefig(tmp, dpi=120, format="png")
-    import matplotlib.pyplot as plt
 
-    plt.close(fig)
     return target
 
 
 def _lambda_plot(rows, title: str, with_discrete: bool):
-    import matplotlib.pyplot as plt
+    import matplotlib
+    from matplotlib.figure import Figure
 
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig = Figure(figsize=(7, 5))
+    ax = fig.subplots()
     shs = sorted({r["Sh"] for r in rows})
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
     for i, sh in enumerate(shs):
         rr = sorted([r for r in rows if r["Sh"] == sh], key=lambda r: r["Sd"])
         sd = [r["Sd"] for r in rr]
@@ -49,9 +49,10 @@ def _lambda_plot(rows, title: str, with_discrete: bool):
 
 
 def _hinge_plot(rows, title: str):
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
-    fig, axs = plt.subplots(1, 4, figsize=(12, 3.5), sharex=True)
+    fig = Figure(figsize=(12, 3.5))
+    axs = fig.subplots(1, 4, sharex=True)
     shs = sorted({r["Sh"] for r in rows})
     for k in range(4):
         for sh in shs:
@@ -69,7 +70,7 @@ def _hinge_plot(rows, title: str):
 
 def mechanism_figure(spec_id: str, arch, config: str = "glued"):
     """Drawing of a specimen's discrete mechanism: blocks shaded by macro-block, hinges marked."""
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
     from matplotlib.patches import Polygon
 
     from analytic.limit_discrete import enumerate_mechanisms
@@ -83,7 +84,8 @@ def mechanism_figure(spec_id: str, arch, config: str = "glued"):
         for bi in range(j[k].b, j[k + 1].a + 1):
             shade[bi] = k
     colors = ("#e69f00", "#56b4e9", "#009e73")
-    fig, ax = plt.subplots(figsize=(5, 4))
+    fig = Figure(figsize=(5, 4))
+    ax = fig.subplots()
     for b in asm.bodies:
         ax.add_patch(Polygon(b.outline, closed=True, fc=colors[shade[b.index]] if b.index in shade else "#dddddd",
                              ec="k", lw=0.6))
@@ -103,9 +105,7 @@ def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True, rows:
     """Write all limit-analysis figures to ``out_dir``; return the files written. ``rows``: the
     catalogue's :func:`analytic.summary.multiplier_series`, if the caller has computed it."""
     from analytic.summary import multiplier_series
-    import matplotlib
 
-    matplotlib.use("Agg", force=False)
     from specimens.catalogue import CATALOGUE, full_scale_set
 
     out = Path(out_dir)

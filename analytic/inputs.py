@@ -14,7 +14,6 @@ import numpy as np
 
 from specimens.errors import ArchdemInputError
 
-G = 9.81  # m/s^2, standard gravity used throughout archdem
 
 
 def _check_positive(name: str, v: float) -> None:

@@ -14,7 +14,8 @@ from typing import Literal
 import numpy as np
 
 from specimens.geometry import PointedArch
-from specimens.sections import SectionProperties, ring_segment_properties
+from specimens.sections import SectionProperties
+from specimens.geometry import ring_segment_properties
 
 Face = Literal["intrados", "extrados"]
 

@@ -30,7 +30,7 @@ from typing import Sequence
 import numpy as np
 from scipy.optimize import linprog
 
-from analytic.inputs import G
+from specimens.constants import G
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock
 from specimens.blocks import Assembly
 from specimens.errors import ArchdemInputError

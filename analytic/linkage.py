@@ -27,7 +27,7 @@ from typing import Sequence
 import numpy as np
 from scipy.optimize import brentq
 
-from analytic.inputs import G
+from specimens.constants import G
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock
 from analytic.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
 from specimens.errors import ArchdemInputError

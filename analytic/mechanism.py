@@ -31,7 +31,7 @@ from typing import NamedTuple, Sequence
 import numpy as np
 from scipy.optimize import brentq
 
-from analytic.inputs import G
+from specimens.constants import G
 
 #: default rotation limit as a multiple of phi_cr (spec 02 §2.4: "a fixed large multiple")
 LIMIT_FACTOR = 4.0

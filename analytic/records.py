@@ -12,7 +12,7 @@ Formats (see the ground-motion data README kept with the test data):
   dropped (the motion starts at t = 0).
 
 Every reader returns acceleration in m/s^2 as :class:`analytic.inputs.SampledMotion`
-(``g`` is converted with :data:`analytic.inputs.G`). Units written in a file win; a
+(``g`` is converted with :data:`specimens.constants.G`). Units written in a file win; a
 declared ``units`` that contradicts the file is an error (it is almost always a mistake).
 Malformed files raise :class:`ArchdemInputError` with a one-line message
 ``FILE:LINE: problem``. This module does file I/O only; the processing functions
@@ -28,7 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from analytic.inputs import G, SampledMotion
+from specimens.constants import G
+from analytic.inputs import GroundMotion, SampledMotion, SinePulse
 from specimens.errors import ArchdemInputError
 
 FORMATS = ("at2", "smc", "esm", "csv")
@@ -445,3 +446,41 @@ def with_zero_tail(motion: SampledMotion, seconds: float) -> SampledMotion:
     if n == 0:
         return motion
     return replace(motion, values=np.concatenate([motion.values, np.zeros(n)]))
+
+
+def ground_motion(sine: float | None = None, amplitude: float | None = None, record: str | Path | None = None,
+                  units: str | None = None, baseline: bool = False, scale: float | None = None,
+                  pga: float | None = None) -> GroundMotion:
+    """The ground motion of ``archdem shake`` and ``archdem rock``, in the command line's units:
+    a one-cycle sine pulse of ``sine`` [Hz] and ``amplitude`` [g] (:class:`SinePulse`, zero phase),
+    or the accelerogram ``record`` (any supported format; ``units`` if the file does not say),
+    optionally baseline-corrected, times ``scale``, or scaled to ``pga`` [g]."""
+    def positive(name: str, v: float | None) -> None:
+        if v is not None and not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise ArchdemInputError(f"{name} must be a positive number, got {v}")
+
+    if (sine is None) == (record is None):
+        raise ArchdemInputError("give exactly one input: --sine FREQ --amplitude A_G, or --record FILE")
+    if sine is not None:
+        positive("--sine", sine)
+        if amplitude is None:
+            raise ArchdemInputError("--sine needs --amplitude A_G (in g)")
+        positive("--amplitude", amplitude)
+        if scale is not None or pga is not None:
+            raise ArchdemInputError("--scale/--pga go with --record")
+        return SinePulse(amplitude * G, sine)
+    if amplitude is not None:
+        raise ArchdemInputError("--amplitude goes with --sine; scale a record with --scale or --pga")
+    if scale is not None and pga is not None:
+        raise ArchdemInputError("give --scale or --pga, not both")
+    m = read_record(record, units=units)
+    if baseline:
+        m = baseline_correct(m)
+    if scale is not None:
+        if not math.isfinite(scale) or scale == 0:
+            raise ArchdemInputError(f"--scale must be a non-zero number, got {scale}")
+        m = m.scaled(scale)
+    if pga is not None:
+        positive("--pga", pga)
+        m = m.to_pga(pga * G)
+    return m

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from analytic.inputs import G
+from specimens.constants import G
 from analytic.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
 from specimens.errors import ArchdemInputError
 

@@ -28,10 +28,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from analytic.inputs import G
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
-from specimens.sections import mirror_edges, region_properties, ring_half_boundary
+from specimens.sections import mirror_edges, region_properties
+from specimens.geometry import ring_half_boundary
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from dem.atomic import atomic_path, unique_run_path
+from specimens.io import atomic_path, unique_run_path
 
 
 def report(name: str, res: dict, digits: int = 3) -> Path:
@@ -25,18 +25,13 @@ def timed_threshold(sid: str, freq: float, engine: str = "pybullet", workers: in
     the LP and the model build."""
     import time
 
-    from dem.model import from_assembly
-    from dem.settings import Settings
-    from dem.shake import ShakeProtocol
-    from dem.shake_domain import static_onset
-    from dem.thresholds import threshold
-    from specimens.blocks import discretise
-    from specimens.catalogue import get_specimen
+    from dem.core.model import as_model
+    from dem.core.settings import Settings
+    from dem.experiments.thresholds import static_onset, threshold
 
-    arch = get_specimen(sid).arch
     st = Settings(engine=engine)
-    model = from_assembly(discretise(arch, config=config), name=sid)
-    lam = static_onset(arch, config, st.mu_joint, st.mu_base)
+    model = as_model(sid, config=config)
+    lam = static_onset(model, st)
     t0 = time.perf_counter()
-    th = threshold(model, freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=5 * lam, tol=0.01, workers=workers)
+    th = threshold(model, freq, st, workers=workers)  # the defaults of archdem threshold
     return th, lam, time.perf_counter() - t0

@@ -13,7 +13,8 @@ from analytic.limit_continuous import continuous_collapse
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
 from _common import report
 from specimens.blocks import discretise
-from specimens.catalogue import CATALOGUE, REFERENCE_MU_BASE, REFERENCE_MU_JOINT, full_scale_set
+from specimens.catalogue import CATALOGUE, full_scale_set
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
 
 def main() -> dict:

@@ -19,10 +19,11 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from dem.atomic import atomic_path
-    from dem.campaign import CampaignContext, all_steps, run_campaign
-    from dem.campaign_dem import REFERENCE_SPEED, estimate, machine_speed
-    from dem.provenance import provenance
+    from specimens.io import atomic_path
+    from dem.campaign.context import CampaignContext
+    from dem.campaign.runner import all_steps, run_campaign
+    from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
+    from dem.core.provenance import provenance
     from specimens.catalogue import select_specimens
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -16,9 +16,9 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def _tilt(sid: str) -> dict:
-    from dem.model import from_assembly
-    from dem.protocols import tilt
-    from dem.settings import Settings
+    from dem.core.model import from_assembly
+    from dem.experiments.tilt import tilt
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -30,16 +30,16 @@ def _tilt(sid: str) -> dict:
 
 
 def per_simulated_second(model, seconds: float = 1.0) -> float:
-    from dem.load import Rest
-    from dem.protocols import simulate
-    from dem.settings import Settings
+    from dem.core.loads import Rest
+    from dem.core.simulate import simulate
+    from dem.core.settings import Settings
 
     r = simulate(model, Settings(), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
     return r.wall_s / seconds
 
 
 def main() -> None:
-    from dem.model import from_assembly, side_by_side
+    from dem.core.model import from_assembly, side_by_side
     from specimens.blocks import discretise
     from specimens.catalogue import SPECIMEN_IDS, get_specimen
 

@@ -46,9 +46,9 @@ def _step_time(engine: str, copies: int, seconds: float) -> dict:
     """
     import numpy as np
 
-    from dem.engines import get_engine
-    from dem.model import from_assembly, side_by_side
-    from dem.settings import Settings
+    from dem.core.engines import get_engine
+    from dem.core.model import from_assembly, side_by_side
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -79,9 +79,9 @@ def _step_time(engine: str, copies: int, seconds: float) -> dict:
 
 
 def _tilt_time(engine: str, sid: str) -> dict:
-    from dem.compare_engines import engine_tilt
-    from dem.model import from_assembly
-    from dem.settings import Settings
+    from dem.experiments.compare_engines import engine_tilt
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -114,9 +114,9 @@ def _slope(x, y) -> float:
 
 
 def main() -> None:
-    from dem.atomic import atomic_path
-    from dem.provenance import package_version
-    from dem.settings import Settings
+    from specimens.io import atomic_path
+    from dem.core.provenance import package_version
+    from dem.core.settings import Settings
     from specimens.catalogue import select_specimens
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -142,7 +142,7 @@ def main() -> None:
                  "threshold_repeats": a.threshold_repeats,
                  "protocol_dt_s": Settings().dt}
     if "mujoco" in engines:
-        from dem.engines.mujoco_engine import DEFAULT_OPTIONS
+        from dem.core.engines.mujoco_engine import DEFAULT_OPTIONS
 
         res["mujoco_internal_dt_s"] = DEFAULT_OPTIONS.max_dt
     t_start = time.perf_counter()

@@ -19,10 +19,11 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from analytic.inputs import G, SinePulse
-    from dem.model import from_assembly
-    from dem.settings import Settings
-    from dem.shake import ShakeProtocol, shake
+    from specimens.constants import G
+    from analytic.inputs import SinePulse
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
+    from dem.experiments.shake import ShakeProtocol, shake
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 

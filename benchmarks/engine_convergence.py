@@ -18,10 +18,10 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from dem.atomic import atomic_path
-    from dem.compare_engines import FRICTIONS, engine_tilt
-    from dem.model import from_assembly
-    from dem.settings import Settings
+    from specimens.io import atomic_path
+    from dem.experiments.compare_engines import FRICTIONS, engine_tilt
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 

@@ -20,13 +20,10 @@ from _common import report
 
 
 def main() -> None:
-    from dem.model import from_assembly
-    from dem.settings import Settings
-    from dem.shake import ShakeProtocol
-    from dem.shake_domain import static_onset
-    from dem.thresholds import threshold
-    from specimens.blocks import discretise
-    from specimens.catalogue import get_specimen
+    from dem.core.model import as_model
+    from dem.core.settings import Settings
+    from dem.experiments.shake import ShakeProtocol
+    from dem.experiments.thresholds import static_onset, threshold
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--id", default="Sh06-Sd015")
@@ -38,10 +35,9 @@ def main() -> None:
     ap.add_argument("--max-ratio", type=float, default=5.0, help="scan up to this x the static onset")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     a = ap.parse_args()
-    arch = get_specimen(a.id).arch
-    model = from_assembly(discretise(arch, config=a.config), name=a.id)
+    model = as_model(a.id, config=a.config)
     st0 = Settings()
-    lam = static_onset(arch, a.config, st0.mu_joint, st0.mu_base)
+    lam = static_onset(model, st0)
     rows = []
     for spec in a.settings.split(","):
         eng, dt, it = spec.split(":")

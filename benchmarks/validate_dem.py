@@ -37,10 +37,10 @@ OUT = Path(__file__).resolve().parent / "results"
 
 def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet", **settings_kw) -> float:
     """Largest displacement of any body point after ``seconds`` at rest [m]."""
-    from dem.load import Rest
-    from dem.model import from_assembly
-    from dem.protocols import simulate
-    from dem.settings import Settings
+    from dem.core.loads import Rest
+    from dem.core.model import from_assembly
+    from dem.core.simulate import simulate
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -67,9 +67,10 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     ``job[5]``: Settings fields that differ from the defaults (other than friction and engine)."""
     sid, config, with_drift, engine, proto_kw, settings_kw = job
     from analytic.limit_discrete import solve_lp
-    from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, tilt
-    from dem.settings import NO_SLIDING_MU, Settings
+    from dem.core.model import from_assembly
+    from dem.experiments.tilt import TiltProtocol, tilt
+    from specimens.constants import NO_SLIDING_MU
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -84,7 +85,7 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     # at which it was ended at rest [s]; None if not), the LP being the
     # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
     # the associative one at the reference friction for the reference test (an upper bound only)
-    import dem.protocols as protocols
+    import dem.experiments.tilt as protocols
 
     hold_level = protocols.hold_level
 
@@ -126,9 +127,10 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
 def sensitivity(job: tuple[str, str]) -> dict:
     """No-sliding lambda at the defaults, with dt halved, and with the hold ramp twice as slow."""
     sid, variant = job
-    from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, tilt
-    from dem.settings import NO_SLIDING_MU, Settings
+    from dem.core.model import from_assembly
+    from dem.experiments.tilt import TiltProtocol, tilt
+    from specimens.constants import NO_SLIDING_MU
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 

@@ -9,8 +9,6 @@ from dataclasses import dataclass
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
-REFERENCE_MU_JOINT = 0.577  # tan 30 deg, block-block (spec 01 §1.3)
-REFERENCE_MU_BASE = 1.0  # tan 45 deg, last block-base
 SPECIMEN_WIDTH = 0.100  # m
 
 # id, Ri, Re, e  [mm]
@@ -81,3 +79,26 @@ def full_scale_set(
                 arch = PointedArch.from_ratios(sh, sd, span / 2, width=width)
                 out.append(Specimen(f"L{span:g}-Sh{sh:g}-Sd{sd:g}", arch))
     return out
+
+
+def catalogue_rows() -> list[dict]:
+    """One row per catalogue specimen, SI units (the JSON schema of ``archdem specimens``: the
+    keys in ``JSON_KEYS``)."""
+    from specimens.blocks import discretise
+
+    rows = []
+    for s in CATALOGUE:
+        a = s.arch
+        glued = discretise(a, config="glued")
+        free = discretise(a, config="free")
+        rows.append({
+            "id": s.id, "Ri": a.Ri, "Re": a.Re, "e": a.e, "t": a.t, "Sh": a.Sh, "Sd": a.Sd,
+            "span": a.span, "rise": a.rise, "mass": glued.total_mass,
+            "n_blocks": len(free.blocks),
+            "n_bodies_free": free.n_bodies, "n_bodies_glued": glued.n_bodies,
+        })
+    return rows
+
+
+
+JSON_KEYS = ("id", "Ri", "Re", "e", "t", "Sh", "Sd", "span", "rise", "mass", "n_blocks")

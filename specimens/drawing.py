@@ -11,12 +11,12 @@ from specimens.blocks import Assembly
 def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensions: bool = True,
                   face_colors: list | None = None, joint_colors: dict[str, str] | None = None):
     """Draw the bodies (grey), the joints (numbered) and the main dimensions [mm] on ``ax``."""
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
     from matplotlib.patches import Polygon
 
     arch = assembly.arch
     if ax is None:
-        _, ax = plt.subplots(figsize=(7, 5.5))
+        ax = Figure(figsize=(7, 5.5)).subplots()
     for k, body in enumerate(assembly.bodies):
         fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if body.name != "C" else "#c4a97a")
         ax.add_patch(Polygon(body.outline * 1000, closed=True, fc=fc, ec="k", lw=0.8))
@@ -55,18 +55,16 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
 
 def save_drawing(assembly: Assembly, path: str | Path, title: str | None = None) -> Path:
     """Draw ``assembly`` and save it atomically to ``path`` (format from the suffix)."""
-    import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
 
-    from dem.atomic import atomic_path
+    from specimens.io import atomic_path
 
     path = Path(path)
-    fig, ax = plt.subplots(figsize=(7, 5.5))
+    fig = Figure(figsize=(7, 5.5))
+    ax = fig.subplots()
     draw_assembly(assembly, ax, title=title)
     fig.tight_layout()
     with atomic_path(path, overwrite=True) as tmp:
         fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=130)
-    plt.close(fig)
     return path

@@ -58,7 +58,7 @@ def export_meshes(assembly: Assembly, out_dir: str | Path, fmt: MeshFormat = "st
     one convex, watertight solid). ``glb``: one scene file ``assembly.glb`` with one node
     per piece named ``<body>_p<k>``.
     """
-    from dem.atomic import atomic_path
+    from specimens.io import atomic_path
 
     out = Path(out_dir)
     written: list[Path] = []

@@ -10,12 +10,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Sequence, Union
+from typing import Sequence, Union
 
 import numpy as np
-
-if TYPE_CHECKING:  # pragma: no cover
-    from specimens.geometry import PointedArch
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
 
@@ -123,33 +120,6 @@ def is_convex(poly: np.ndarray, tol: float = 1e-12) -> bool:
     return bool(np.all(cross >= -tol * scale))
 
 
-def ring_half_boundary(arch: "PointedArch", psi_a: float, psi_b: float | None) -> list[Edge]:
-    """Exact boundary of the right half of the ring between radial cuts ``psi_a < psi_b``.
-
-    ``psi_b = None`` closes the region at the symmetry axis (keystone zone included).
-    """
-    c = (-arch.e, 0.0)
-    I = lambda psi: tuple(arch.point(psi, arch.Ri))  # noqa: E731
-    E = lambda psi: tuple(arch.point(psi, arch.Re))  # noqa: E731
-    if psi_b is None:
-        if psi_a > arch.psi_i:
-            raise ValueError("psi_a beyond the intrados apex")
-        return [
-            Arc(c, arch.Ri, psi_a, arch.psi_i),
-            Segment(tuple(arch.apex_intrados), tuple(arch.apex_extrados)),
-            Arc(c, arch.Re, arch.psi_e, psi_a),
-            Segment(E(psi_a), I(psi_a)),
-        ]
-    if not psi_a < psi_b <= arch.psi_i:
-        raise ValueError("need psi_a < psi_b <= psi_i")
-    return [
-        Arc(c, arch.Ri, psi_a, psi_b),
-        Segment(I(psi_b), E(psi_b)),
-        Arc(c, arch.Re, psi_b, psi_a),
-        Segment(E(psi_a), I(psi_a)),
-    ]
-
-
 def mirror_edges(edges: Sequence[Edge]) -> list[Edge]:
     """Mirror a boundary about x = 0 (right half -> left half)."""
     out: list[Edge] = []
@@ -171,29 +141,3 @@ def combine(parts: Sequence[SectionProperties]) -> SectionProperties:
     return SectionProperties(float(A), np.asarray(c, dtype=float), float(Ixx), float(Iyy), float(Ixy))
 
 
-def ring_segment_properties(arch: "PointedArch", cut_a: tuple[int, float], cut_b: tuple[int, float]) -> SectionProperties:
-    """Exact properties of the continuous ring between two radial cuts.
-
-    A cut is ``(side, psi)``: ``side = -1`` left half, ``+1`` right half, ``psi`` its polar
-    angle about that half's centre (0 at the springing, up to ``psi_i``). ``cut_a`` must lie
-    before ``cut_b`` going from the left springing to the right springing. Used for the
-    macro-blocks of the continuous limit analysis and of the linkages.
-    """
-    (sa, pa), (sb, pb) = cut_a, cut_b
-    parts: list[SectionProperties] = []
-    if sa < 0 and sb < 0:
-        if not pa < pb:
-            raise ValueError("cut_a must precede cut_b")
-        return region_properties(mirror_edges(ring_half_boundary(arch, pa, pb)))
-    if sa > 0 and sb > 0:
-        if not pb < pa:
-            raise ValueError("cut_a must precede cut_b")
-        return region_properties(ring_half_boundary(arch, pb, pa))
-    if sa > 0 and sb < 0:
-        raise ValueError("cut_a must precede cut_b")
-    # across the apex: left part from pa to the axis, right part from pb to the axis
-    if pa < arch.psi_i:
-        parts.append(region_properties(mirror_edges(ring_half_boundary(arch, pa, None))))
-    if pb < arch.psi_i:
-        parts.append(region_properties(ring_half_boundary(arch, pb, None)))
-    return combine(parts)

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import warnings
 
 from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir
 from analytic.summary import analyse
@@ -37,7 +36,7 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
-    from specimens.catalogue import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     if args.plot is not None:
         from analytic.figures_limit import catalogue_figures

@@ -9,7 +9,8 @@ from dem.cli.common import add_engine_argument, writable_dir
 
 
 def _campaign(args: argparse.Namespace) -> int:
-    from dem.campaign import CampaignContext, all_steps, run_campaign
+    from dem.campaign.context import CampaignContext
+    from dem.campaign.runner import all_steps, run_campaign
     from specimens.catalogue import select_specimens
 
     specs = select_specimens(args.specimens)
@@ -26,7 +27,7 @@ def _campaign(args: argparse.Namespace) -> int:
             from specimens.errors import ArchdemInputError
 
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(STEPS)}")
-    from dem.campaign_dem import REFERENCE_SPEED, estimate, machine_speed
+    from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
 
     steps_run = steps or list(all_steps())
     if estimate(ctx, steps_run):  # simulator steps ahead: time this machine (about 1 s), then estimate

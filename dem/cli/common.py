@@ -4,13 +4,10 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
-from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from specimens.errors import ArchdemInputError
+from specimens.io import json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 
 
 def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) -> None:
@@ -61,44 +58,35 @@ def discretisation_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     return kw
 
 
-def _default(o: Any) -> Any:
-    if isinstance(o, np.ndarray):
-        return o.tolist()
-    if isinstance(o, (np.floating, np.integer)):
-        return o.item()
-    if isinstance(o, np.bool_):
-        return bool(o)
-    if isinstance(o, Path):
-        return str(o)
-    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
 def print_json(obj: Any) -> None:
-    print(json.dumps(obj, indent=2, default=_default, allow_nan=True))
+    print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
 
 
-def writable_dir(path: str | os.PathLike) -> Path:
-    """Create ``path`` (a directory) or fail with a one-line input error."""
-    p = Path(path)
-    try:
-        p.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ArchdemInputError(f"cannot create output directory {p}: {exc.strerror}") from None
-    if not os.access(p, os.W_OK):
-        raise ArchdemInputError(f"output directory {p} is not writable")
-    return p
 
 
-def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
-    """Check that ``path`` can be written (its directory exists or can be made)."""
-    p = Path(path)
-    writable_dir(p.parent if str(p.parent) else ".")
-    if p.exists() and not overwrite:
-        raise ArchdemInputError(f"{p} exists; not overwriting it (choose another name)")
-    return p
 
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:
     """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
     p.add_argument("--engine", choices=("pybullet", "mujoco"), default="pybullet",
                    help="physics engine (default pybullet; see README 'Choosing an engine')")
+
+
+def parse_grid(text: str, what: str = "--freq") -> list[float]:
+    """``"0.5,1,2"`` or an inclusive range ``"start:stop:step"``."""
+    try:
+        if ":" in text:
+            a, b, s = (float(v) for v in text.split(":"))
+            if not (s > 0 and b >= a):
+                raise ValueError
+            n = int(math.floor((b - a) / s + 1e-9)) + 1
+            vals = [a + k * s for k in range(n)]
+        else:
+            vals = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ArchdemInputError(f"{what}: expected a list '0.5,1,2' or a range 'start:stop:step', got {text!r}") from None
+    if not vals or not all(math.isfinite(v) and v > 0 for v in vals):
+        raise ArchdemInputError(f"{what}: values must be positive, got {text!r}")
+    return vals

@@ -9,9 +9,9 @@ from specimens.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.compare_engines import compare, summary
-    from dem.engines import available_engines
-    from dem.settings import Settings
+    from dem.experiments.compare_engines import compare, summary
+    from dem.core.engines import available_engines
+    from dem.core.settings import Settings
     from specimens.catalogue import select_specimens
 
     ids = [s.id for s in select_specimens(args.specimens)]
@@ -29,7 +29,7 @@ def _run(args: argparse.Namespace) -> int:
         writable_file(args.plot)
     rows = compare(ids, args.config, engines, frictions, base, workers=args.workers)
     if args.plot:
-        from dem.figures_engines import save_engine_comparison
+        from dem.plotting.engines import save_engine_comparison
 
         save_engine_comparison(rows, args.plot)
     if args.json:

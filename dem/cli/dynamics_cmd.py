@@ -5,26 +5,8 @@ import argparse
 import math
 
 
-from dem.cli.common import add_arch_arguments, arch_from_args, print_json, writable_file
+from dem.cli.common import add_arch_arguments, arch_from_args, parse_grid, print_json, writable_file
 from specimens.errors import ArchdemInputError
-
-
-def parse_grid(text: str, what: str = "--freq") -> list[float]:
-    """``"0.5,1,2"`` or an inclusive range ``"start:stop:step"``."""
-    try:
-        if ":" in text:
-            a, b, s = (float(v) for v in text.split(":"))
-            if not (s > 0 and b >= a):
-                raise ValueError
-            n = int(math.floor((b - a) / s + 1e-9)) + 1
-            vals = [a + k * s for k in range(n)]
-        else:
-            vals = [float(v) for v in text.split(",") if v.strip()]
-    except ValueError:
-        raise ArchdemInputError(f"{what}: expected a list '0.5,1,2' or a range 'start:stop:step', got {text!r}") from None
-    if not vals or not all(math.isfinite(v) and v > 0 for v in vals):
-        raise ArchdemInputError(f"{what}: values must be positive, got {text!r}")
-    return vals
 
 
 def _restitution(text: str) -> float | None:
@@ -92,7 +74,7 @@ def _add_common(p: argparse.ArgumentParser) -> None:
 def _run_domain(args: argparse.Namespace) -> int:
     if args.engine == "dem":
         try:
-            from dem.shake_domain import dem_domain  # noqa: F401
+            from dem.cli.domain_dem import dem_domain  # noqa: F401
         except ImportError:
             raise ArchdemInputError("the DEM failure domain is not available yet") from None
         return int(dem_domain(args) or 0)
@@ -134,7 +116,7 @@ def _run_domain(args: argparse.Namespace) -> int:
 def _run_rock(args: argparse.Namespace) -> int:
     from analytic.domain import make_input
     from analytic.dynamics import simulate
-    from analytic.inputs import G
+    from specimens.constants import G
 
     rest = _restitution(args.restitution)
     if args.record is not None:

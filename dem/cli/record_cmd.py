@@ -10,7 +10,7 @@ from dem.cli.common import print_json
 
 def record_summary(path: str, fmt: str = "auto", units: str | None = None) -> dict:
     """Name, sampling, duration and PGA of a record file (SI units, PGA also in g)."""
-    from analytic.inputs import G
+    from specimens.constants import G
     from analytic.records import load_record
 
     rec = load_record(path, fmt, units)

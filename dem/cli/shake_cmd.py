@@ -15,8 +15,8 @@ def _positive(name: str, v: float | None) -> None:
 
 
 def _model_and_settings(args: argparse.Namespace):
-    from dem.model import from_assembly
-    from dem.settings import Settings
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
 
     label, arch = arch_from_args(args)
@@ -33,40 +33,16 @@ def _model_and_settings(args: argparse.Namespace):
 
 
 def _motion(args: argparse.Namespace):
-    from analytic.inputs import G, SinePulse
+    from analytic.records import ground_motion
 
-    if (args.sine is None) == (args.record is None):
-        raise ArchdemInputError("give exactly one input: --sine FREQ --amplitude A_G, or --record FILE")
-    if args.sine is not None:
-        _positive("--sine", args.sine)
-        if args.amplitude is None:
-            raise ArchdemInputError("--sine needs --amplitude A_G (in g)")
-        _positive("--amplitude", args.amplitude)
-        if args.scale is not None or args.pga is not None:
-            raise ArchdemInputError("--scale/--pga go with --record")
-        return SinePulse(args.amplitude * G, args.sine)
-    from analytic.records import baseline_correct, read_record
-
-    if args.amplitude is not None:
-        raise ArchdemInputError("--amplitude goes with --sine; scale a record with --scale or --pga")
-    if args.scale is not None and args.pga is not None:
-        raise ArchdemInputError("give --scale or --pga, not both")
-    m = read_record(args.record, units=args.units)
-    if args.baseline:
-        m = baseline_correct(m)
-    if args.scale is not None:
-        if not math.isfinite(args.scale) or args.scale == 0:
-            raise ArchdemInputError(f"--scale must be a non-zero number, got {args.scale}")
-        m = m.scaled(args.scale)
-    if args.pga is not None:
-        _positive("--pga", args.pga)
-        m = m.to_pga(args.pga * G)
-    return m
+    return ground_motion(sine=args.sine, amplitude=args.amplitude, record=args.record, units=args.units,
+                         baseline=args.baseline, scale=args.scale, pga=args.pga)
 
 
 def _run_shake(args: argparse.Namespace) -> int:
-    from dem.atomic import unique_run_path
-    from dem.shake import ShakeProtocol, save_shake, shake
+    from specimens.io import unique_run_path
+    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.formats.shake import save_shake
 
     motion = _motion(args)
     label, _, _, model, settings = _model_and_settings(args)
@@ -79,7 +55,7 @@ def _run_shake(args: argparse.Namespace) -> int:
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
     path = save_shake(res, unique_run_path(out, stem))
     if args.plot:
-        from dem.figures_shake import save_shake_figure
+        from dem.plotting.shake import save_shake_figure
 
         save_shake_figure(res, args.plot)
     s = res.summary()
@@ -96,19 +72,18 @@ def _run_shake(args: argparse.Namespace) -> int:
 
 
 def _run_threshold(args: argparse.Namespace) -> int:
-    from dem.shake import ShakeProtocol
-    from dem.shake_domain import static_onset
-    from dem.thresholds import threshold
+    from dem.experiments.shake import ShakeProtocol
+    from dem.experiments.thresholds import static_onset, threshold
 
     _positive("--sine", args.sine)
     label, arch, _, model, settings = _model_and_settings(args)
-    lam = static_onset(arch, args.config, settings.mu_joint, settings.mu_base, discretisation_kwargs(args))
-    a_min = args.a_min if args.a_min is not None else lam
-    _positive("--a-min", a_min)
-    a_max = args.a_max if args.a_max is not None else 5.0 * a_min
+    lam = static_onset(model, settings)
+    _positive("--a-min", args.a_min)
+    _positive("--a-max", args.a_max)
     _positive("--tol", args.tol)
-    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=a_min, a_max_g=a_max,
-                    scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
+    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
+                    a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
+    a_max = res.a_range_g[1]
     s = {"id": label, "lambda": lam, "config": args.config, "mu_joint": settings.mu_joint,
          "mu_base": settings.mu_base, **res.summary()}
     if args.json:
@@ -125,7 +100,7 @@ def _run_threshold(args: argparse.Namespace) -> int:
 
 
 def _run_animate(args: argparse.Namespace) -> int:
-    from dem.animate import animate
+    from dem.plotting.animate import animate
 
     out = animate(args.run, args.out, fps=args.fps, max_frames=args.frames)
     print(out)

@@ -2,32 +2,10 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from specimens.catalogue import JSON_KEYS, catalogue_rows
 from specimens.errors import ArchdemInputError
-
-
-def catalogue_rows() -> list[dict]:
-    """One row per catalogue specimen, SI units (the JSON schema of ``archdem specimens``)."""
-    from specimens.blocks import discretise
-    from specimens.catalogue import CATALOGUE
-
-    rows = []
-    for s in CATALOGUE:
-        a = s.arch
-        glued = discretise(a, config="glued")
-        free = discretise(a, config="free")
-        rows.append({
-            "id": s.id, "Ri": a.Ri, "Re": a.Re, "e": a.e, "t": a.t, "Sh": a.Sh, "Sd": a.Sd,
-            "span": a.span, "rise": a.rise, "mass": glued.total_mass,
-            "n_blocks": len(free.blocks),
-            "n_bodies_free": free.n_bodies, "n_bodies_glued": glued.n_bodies,
-        })
-    return rows
-
-
-JSON_KEYS = ("id", "Ri", "Re", "e", "t", "Sh", "Sd", "span", "rise", "mass", "n_blocks")
 
 
 def _specimens(args: argparse.Namespace) -> int:

@@ -9,11 +9,11 @@ from specimens.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.atomic import unique_run_path
-    from dem.model import from_assembly
-    from dem.protocols import TiltProtocol, tilt
-    from dem.results import save_result
-    from dem.settings import Settings
+    from specimens.io import unique_run_path
+    from dem.core.model import from_assembly
+    from dem.experiments.tilt import TiltProtocol, tilt
+    from dem.formats.tilt import save_result
+    from dem.core.settings import Settings
     from specimens.blocks import discretise
 
     label, arch = arch_from_args(args)
@@ -36,7 +36,7 @@ def _run(args: argparse.Namespace) -> int:
                label=label, assembly=asm)
     path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
     if args.plot:
-        from dem.figures import save_tilt_figure
+        from dem.plotting.tilt import save_tilt_figure
 
         save_tilt_figure(res, args.plot)
     s = res.summary()

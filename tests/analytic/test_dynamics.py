@@ -8,7 +8,8 @@ import pytest
 
 from analytic.domain import domain_column
 from analytic.dynamics import linearised_collapse, simulate
-from analytic.inputs import G, PulseA, SinePulse
+from specimens.constants import G
+from analytic.inputs import PulseA, SinePulse
 from analytic.linkage import arch_four_bar, oppenheim_hinges
 from analytic.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen

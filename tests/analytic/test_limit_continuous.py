@@ -13,7 +13,8 @@ from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
-from specimens.sections import region_properties, ring_segment_properties
+from specimens.sections import region_properties
+from specimens.geometry import ring_segment_properties
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from analytic.inputs import G, SampledMotion
+from specimens.constants import G
+from analytic.inputs import SampledMotion
 from analytic.records import (baseline_correct, detect_format, load_record, read_record, resample,
                               with_zero_tail)
 from dem.cli import main

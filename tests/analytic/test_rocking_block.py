@@ -8,7 +8,7 @@ import pytest
 
 from analytic.dynamics import integrate
 from analytic.impact import energy_restitution, post_impact
-from analytic.inputs import G
+from specimens.constants import G
 from analytic.rocking_block import RockingBlock
 from specimens.errors import ArchdemInputError
 

@@ -6,7 +6,8 @@ from analytic.limit_continuous import continuous_collapse
 from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star, two_bar_geometry
 from specimens.catalogue import CATALOGUE, get_specimen
 from specimens.errors import ArchdemInputError
-from specimens.sections import ring_half_boundary, region_properties
+from specimens.geometry import ring_half_boundary
+from specimens.sections import region_properties
 
 
 @pytest.mark.parametrize("sid", [s.id for s in CATALOGUE])

@@ -78,7 +78,7 @@ def test_mass_and_centroid_against_fine_shoelace(shape, config):
 
 
 def test_curved_mass_within_half_percent_of_exact_arcs():
-    from specimens.sections import ring_segment_properties
+    from specimens.geometry import ring_segment_properties
 
     a = get_specimen("Sh06-Sd020").arch
     asm = discretise(a, config="free", shape="curved")

@@ -1,0 +1,55 @@
+"""What every campaign step gets (:class:`CampaignContext`) and the small file helpers they share."""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+
+
+
+@dataclass
+class CampaignContext:
+    """What every step gets: output folder, options, and the log of finished steps."""
+
+    out: Path
+    specimens: list  # list[specimens.catalogue.Specimen]
+    config: str = "glued"
+    engine: str = "pybullet"
+    quick: bool = True
+    workers: int | None = None
+    log: Callable[[str], None] = print
+    results: dict = field(default_factory=dict)
+
+
+
+def _write_csv(path: Path, rows: list[dict]) -> None:
+    import csv
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+
+
+def _pct(a: float, b: float) -> float:
+    return 100.0 * (a - b) / b
+
+
+
+def _write_json_atomic(path: Path, obj: dict) -> None:
+    from specimens.io import atomic_path
+
+    with atomic_path(path, overwrite=True) as tmp:
+        tmp.write_text(json.dumps(obj, indent=2, default=str))
+
+
+def _studies(ctx: CampaignContext) -> Path:
+    p = ctx.out / "studies"
+    p.mkdir(exist_ok=True)
+    return p
+
+

@@ -1,0 +1,122 @@
+"""The campaign report: one self-contained HTML file, the tables as CSV, everything in one HDF5.
+
+Each campaign step returns outputs with (optionally) these keys:
+
+* ``tables``: list of ``{"name", "title", "csv"}`` — CSV files (relative to the campaign folder);
+* ``figures``: list of ``{"path", "caption"}`` — PNG files (relative), embedded as data URIs;
+* ``findings``: list of sentences computed from the results (never written by hand);
+* ``summary``: a short paragraph describing what the step did.
+"""
+from __future__ import annotations
+
+import base64
+import csv
+import html
+import json
+from pathlib import Path
+
+from specimens.io import atomic_path
+
+_CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}
+h1{border-bottom:2px solid #8a6d3b}h2{margin-top:2em;border-bottom:1px solid #ccc}
+table{border-collapse:collapse;font-size:13px;margin:0.8em 0}th,td{border:1px solid #bbb;padding:3px 7px;text-align:right}
+th{background:#f3efe6}td:first-child,th:first-child{text-align:left}
+figure{display:inline-block;margin:0.5em;vertical-align:top;max-width:100%}figure img{max-width:540px;width:100%;border:1px solid #ddd}
+figcaption{font-size:12px;color:#555;max-width:520px}.findings li{margin:0.3em 0}.meta{font-size:12px;color:#555}
+"""
+
+
+def _read_csv(path: Path) -> list[dict]:
+    with open(path, newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def _fmt(v: str) -> str:
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        return html.escape(str(v))
+    if x != x:
+        return "–"
+    if x == int(x) and abs(x) < 1e6 and "." not in str(v) and "e" not in str(v).lower():
+        return str(int(x))
+    return f"{x:.4g}"
+
+
+def _table_html(rows: list[dict], title: str, name: str) -> str:
+    if not rows:
+        return f"<p>(table {html.escape(title)} is empty)</p>"
+    cols = list(rows[0])
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in cols)
+    body = "".join("<tr>" + "".join(f"<td>{_fmt(r[c])}</td>" for c in cols) + "</tr>" for r in rows)
+    return (f'<table class="data" data-name="{html.escape(name)}"><caption>{html.escape(title)}</caption>'
+            f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
+
+
+def _figure_html(path: Path, caption: str) -> str:
+    data = base64.b64encode(path.read_bytes()).decode("ascii")
+    return (f'<figure><img alt="{html.escape(caption)}" src="data:image/png;base64,{data}">'
+            f"<figcaption>{html.escape(caption)}</figcaption></figure>")
+
+
+def build_report(out: Path, manifest: dict, step_titles: dict[str, str]) -> dict:
+    """Write ``report.html`` and ``campaign.h5`` into ``out``; return their paths and counts."""
+    parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>archdem campaign</title><style>{_CSS}</style></head><body>",
+             "<h1>archdem — virtual test campaign</h1>"]
+    params = manifest.get("parameters", {})
+    prov = manifest.get("provenance", {})
+    parts.append("<p class='meta'>Parameters: " + html.escape(json.dumps(params)) + "<br>Versions: "
+                 + html.escape(", ".join(f"{k} {v}" for k, v in prov.items())) + "</p>")
+    findings_all: list[str] = []
+    for name, rec in manifest.get("steps", {}).items():
+        findings_all += [f"[{name}] {f}" for f in rec["outputs"].get("findings", [])]
+    parts.append("<h2>Findings</h2>")
+    if findings_all:
+        parts.append("<ul class='findings'>" + "".join(f"<li>{html.escape(f)}</li>" for f in findings_all) + "</ul>")
+    else:
+        parts.append("<p>No step produced findings yet.</p>")
+    n_fig = n_tab = 0
+    tables: dict[str, list[dict]] = {}
+    for name, rec in manifest.get("steps", {}).items():
+        o = rec["outputs"]
+        parts.append(f"<h2 id='{html.escape(name)}'>{html.escape(step_titles.get(name, name))}</h2>")
+        parts.append(f"<p class='meta'>step <code>{html.escape(name)}</code>, {rec.get('wall_s', 0):.1f} s</p>")
+        if o.get("summary"):
+            parts.append(f"<p>{html.escape(o['summary'])}</p>")
+        for t in o.get("tables", []):
+            rows = _read_csv(out / t["csv"])
+            tables[t["name"]] = rows
+            parts.append(_table_html(rows, t["title"], t["name"]))
+            parts.append(f"<p class='meta'>CSV: <code>{html.escape(t['csv'])}</code></p>")
+            n_tab += 1
+        for f in o.get("figures", []):
+            parts.append(_figure_html(out / f["path"], f["caption"]))
+            n_fig += 1
+    parts.append("</body></html>")
+    report = out / "report.html"
+    with atomic_path(report, overwrite=True) as tmp:
+        tmp.write_text("\n".join(parts), encoding="utf-8")
+    h5 = out / "campaign.h5"
+    _write_h5(h5, manifest, tables)
+    return {"report": str(report), "hdf5": str(h5), "n_figures": n_fig, "n_tables": n_tab}
+
+
+def _write_h5(path: Path, manifest: dict, tables: dict[str, list[dict]]) -> None:
+    import h5py
+    import numpy as np
+
+    with atomic_path(path, overwrite=True) as tmp:
+        with h5py.File(tmp, "w") as f:
+            f.attrs["parameters"] = json.dumps(manifest.get("parameters", {}))
+            f.attrs["provenance"] = json.dumps(manifest.get("provenance", {}))
+            f.attrs["manifest"] = json.dumps(manifest, default=str)
+            g = f.create_group("tables")
+            for name, rows in tables.items():
+                tg = g.create_group(name)
+                for col in (rows[0] if rows else {}):
+                    vals = [r[col] for r in rows]
+                    try:
+                        tg.create_dataset(col, data=np.array([float(v) if v != "" else np.nan for v in vals]))
+                    except ValueError:
+                        tg.create_dataset(col, data=np.array(vals, dtype=h5py.string_dtype()))

@@ -1,0 +1,91 @@
+"""The main job: the virtual test campaign on the specimen catalogue.
+
+A campaign is a sequence of steps; each writes its files into ``OUT/<step>/`` (built in a
+temporary directory and renamed when complete, so an interrupted step leaves nothing
+half-written) and is recorded in ``OUT/campaign.json``. Running the campaign again on
+the same directory resumes: finished steps are kept, not recomputed.
+"""
+from __future__ import annotations
+
+import json
+import shutil
+import time
+from pathlib import Path
+from typing import Callable
+
+from dem.campaign.context import CampaignContext, _write_json_atomic
+from dem.campaign.step_analytic import step_analytic
+from dem.campaign.step_catalogue import step_catalogue
+from dem.campaign.step_map import step_map
+from dem.campaign.step_record import step_record
+from dem.campaign.step_shake import step_shake
+from dem.campaign.step_tilt import step_tilt
+from specimens.errors import ArchdemInputError
+
+
+StepFunc = Callable[[CampaignContext, Path], dict]
+
+
+# name -> (function, description), in the order the campaign runs them
+STEPS: dict[str, tuple[StepFunc, str]] = {
+    "catalogue": (step_catalogue, "specimen catalogue, drawings and meshes"),
+    "analytic": (step_analytic, "limit analysis of every specimen"),
+    "tilt": (step_tilt, "virtual tilt test of every specimen vs limit analysis"),
+    "map": (step_map, "friction threshold map (rocking / sliding)"),
+    "shake": (step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar"),
+    "record": (step_record, "recorded accelerogram scaled until collapse"),
+}
+
+
+def all_steps() -> dict[str, tuple[StepFunc, str]]:
+    """Every campaign step in order."""
+    return STEPS
+
+
+def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
+    """Run (or resume) the campaign; return the manifest."""
+    all_steps()
+    out = ctx.out
+    out.mkdir(parents=True, exist_ok=True)
+    manifest_path = out / "campaign.json"
+    manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
+    params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "quick": ctx.quick}
+    if manifest and manifest.get("parameters") != params:
+        raise ArchdemInputError(
+            f"{out} holds a campaign with other parameters ({manifest.get('parameters')}); choose another --out"
+        )
+    from dem.core.provenance import provenance
+
+    manifest.setdefault("parameters", params)
+    manifest.setdefault("steps", {})
+    manifest["provenance"] = provenance()
+    for name in steps or list(STEPS):
+        func, desc = STEPS[name]
+        if name in manifest["steps"] and (out / name).is_dir():
+            ctx.log(f"[{name}] already done ({desc}); kept")
+            ctx.results[name] = manifest["steps"][name]["outputs"]
+            continue
+        ctx.log(f"[{name}] {desc} ...")
+        tmp = out / f".{name}.part"
+        if tmp.exists():
+            shutil.rmtree(tmp)
+        tmp.mkdir()
+        t0 = time.perf_counter()
+        outputs = func(ctx, tmp)
+        wall = time.perf_counter() - t0
+        final = out / name
+        if final.exists():
+            shutil.rmtree(final)
+        tmp.rename(final)
+        ctx.results[name] = outputs
+        manifest["steps"][name] = {"outputs": outputs, "wall_s": wall}
+        _write_json_atomic(manifest_path, manifest)
+        ctx.log(f"[{name}] done in {wall:.1f} s")
+    from dem.campaign.report import build_report
+
+    rep = build_report(out, manifest, {k: v[1] for k, v in STEPS.items()})
+    manifest["report"] = rep["report"]
+    _write_json_atomic(manifest_path, manifest)
+    return manifest
+
+

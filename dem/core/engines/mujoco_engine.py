@@ -1,0 +1,252 @@
+"""MuJoCo backend (``mujoco`` >= 3.x; measured with 4.0). One ``MjModel``/``MjData`` per instance.
+
+The model is built in memory as an MJCF string from the engine-neutral :class:`dem.core.model.Model`:
+
+* one body per rigid body, body frame = the arch frame translated to the centroid (so the
+  rotation of a body is directly the rotation from its as-built orientation), a ``freejoint``
+  (or, with ``settings.planar``, two slides x, y and a hinge z: an exact planar constraint),
+  an explicit ``<inertial>`` with the mass and the full centroidal inertia tensor;
+* one convex mesh geom per convex piece (inline vertices of the prism, offset outward by
+  ``settings.inflate`` as for PyBullet so that touching faces are in contact at step 0); the
+  base pads are static geoms of the world body, or, with a driven base (shake table), geoms of
+  a body 10^6 times heavier than the arch on a horizontal slide joint whose velocity is set
+  every step to the one that lands it on the prescribed position;
+* friction: MuJoCo combines a contact pair's friction as the *maximum* of the two geoms'
+  values unless their ``priority`` differs, in which case the higher-priority geom's value is
+  used. Blocks carry ``mu_joint`` at priority 0, the base ``mu_base`` at priority 1: any pair of
+  values is reproduced exactly (block-block ``mu_joint``, block-base ``mu_base``);
+* condim 3 (sliding friction only; rolling/torsional friction are not masonry physics),
+  elliptic cone, Newton solver, ``implicitfast`` integrator, multi-point convex collision
+  (``multiccd``, on by default in 4.x) so a face-face contact gets several points.
+
+Settings from spec 04 §4.2, re-measured here (see ``tests/dem/core/engines/test_mujoco_engine.py`` and
+``benchmarks/bench_engines.py``): with MuJoCo's default ``solref`` 0.02 s the contacts are
+soft enough that an arch sinks and collapses at rest; ``solref = (0.001, 1)``,
+``solimp = (0.99, 0.999, 0.0001)`` and 10 no-slip iterations keep the rest drift below
+0.005 mm in 10 s. The ``solref`` time constant must be >= 2 dt (MuJoCo's ``refsafe``), so the
+internal step is at most 0.5 ms; with Coulomb friction 0.5 ms is not converged (see
+``MuJoCoOptions.max_dt``), so the default internal step is 0.25 ms: ``step(n)`` advances
+``n * settings.dt`` in ``ceil(settings.dt / max_dt)`` equal sub-steps per step, so protocols written for ``settings.dt`` are unchanged and a
+smaller ``settings.dt`` refines MuJoCo's step too.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from dem.core.engines.base import Contacts, Engine
+from dem.core.engines.inputs import accel, on_grid, significant
+from dem.core.model import Model
+from dem.core.settings import Settings
+from specimens.mesh import prism
+
+
+@dataclass(frozen=True)
+class MuJoCoOptions:
+    """MuJoCo-specific solver and contact parameters (defaults: spec 04 §4.2, re-measured)."""
+
+    max_dt: float = 2.5e-4  # [s] largest internal step. 0.5 ms (spec 04) is exact to 0.5 % at no sliding but
+    #   not converged with friction: Sh06-Sd025 glued at 0.577/1.0 gives lambda 0.419-0.450 at 0.5 ms, 0.4634
+    #   at 0.25 ms, 0.4633 at 0.125 ms (Sh1-Sd025: 0.461-0.467, 0.4688, 0.4700); 1 ms breaks solref (tc >= 2 dt)
+    solref: tuple[float, float] = (0.001, 1.0)  # contact time constant [s], damping ratio; 0.02 collapses at rest
+    solimp: tuple[float, float, float] = (0.99, 0.999, 0.0001)  # impedance near 1: stiff, little penetration
+    noslip_iterations: int = 10  # post-solve no-slip pass; removes creep of blocks under static friction
+    iterations: int = 100  # Newton iterations (converges in a few; MuJoCo default)
+    tolerance: float = 1e-10  # solver tolerance (MuJoCo default 1e-8)
+    condim: int = 3
+    cone: str = "elliptic"
+    solver: str = "Newton"
+    integrator: str = "implicitfast"
+    margin: float = 0.0  # [m] contact margin; inflated hulls already touch at step 0
+    extra: dict = field(default_factory=dict)  # other <option> attributes, verbatim
+
+    def with_(self, **kw) -> "MuJoCoOptions":
+        return replace(self, **kw)
+
+    def to_dict(self) -> dict:
+        return {"max_dt": self.max_dt, "solref": list(self.solref), "solimp": list(self.solimp),
+                "noslip_iterations": self.noslip_iterations, "iterations": self.iterations,
+                "tolerance": self.tolerance, "condim": self.condim, "cone": self.cone, "solver": self.solver,
+                "integrator": self.integrator, "margin": self.margin, **self.extra}
+
+
+DEFAULT_OPTIONS = MuJoCoOptions()
+
+
+def _f(x) -> str:
+    return " ".join(repr(float(v)) for v in np.ravel(x))
+
+
+def substeps(dt: float, max_dt: float) -> int:
+    """Number of equal MuJoCo steps per protocol step ``dt`` so that each is <= ``max_dt``."""
+    return max(1, math.ceil(dt / max_dt - 1e-9))
+
+
+def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTIONS, driven_base: bool = False) -> str:
+    """The MJCF text of ``model`` (bodies, convex mesh pieces, base, options); ``driven_base``:
+    the base is a heavy body on an x slide joint named ``table``."""
+    o = options
+    n_sub = substeps(settings.dt, o.max_dt)
+    h = settings.dt / n_sub
+    opt_extra = "".join(f' {k}="{v}"' for k, v in o.extra.items())
+    assets, world, bodies = [], [], []
+    sol = f'solref="{_f(o.solref)}" solimp="{_f(o.solimp)}" condim="{o.condim}" margin="{_f(o.margin)}"'
+
+    def mesh(name: str, poly, width: float, z: float, c: np.ndarray) -> None:
+        m = prism(poly, width, settings.inflate)
+        v = np.asarray(m.vertices, float).copy()
+        v[:, 2] += z
+        assets.append(f'<mesh name="{name}" vertex="{_f(on_grid(v - c))}"/>')
+
+    for k, poly in enumerate(model.base.pieces):
+        mesh(f"base{k}", poly, model.base.width, 0.0, np.zeros(3))
+        world.append(f'<geom name="base{k}" type="mesh" mesh="base{k}" friction="{_f(settings.mu_base)} 0 0" '
+                     f'priority="1" {sol}/>')
+    if driven_base:
+        m_base = 1e6 * sum(b.mass for b in model.bodies)
+        world[:] = ['<body name="table" pos="0 0 0"><joint name="table" type="slide" axis="1 0 0" damping="0"/>'
+                    f'<inertial pos="0 0 0" mass="{_f(m_base)}" diaginertia="{_f([m_base] * 3)}"/>'
+                    + "".join(world) + '</body>']
+    for i, b in enumerate(model.bodies):
+        c = on_grid(b.centroid)  # machine-independent inputs (dem.core.engines.inputs)
+        I = significant(np.asarray(b.inertia, float))
+        geoms = []
+        for k, poly in enumerate(b.pieces):
+            nm = f"b{i}p{k}"
+            mesh(nm, poly, b.width, float(c[2]), c)
+            geoms.append(f'<geom name="{nm}" type="mesh" mesh="{nm}" friction="{_f(settings.mu_joint)} 0 0" '
+                         f'priority="0" {sol}/>')
+        if settings.planar:
+            joints = ('<joint name="j{i}x" type="slide" axis="1 0 0" damping="0"/>'
+                      '<joint name="j{i}y" type="slide" axis="0 1 0" damping="0"/>'
+                      '<joint name="j{i}r" type="hinge" axis="0 0 1" damping="0"/>').format(i=i)
+        else:
+            joints = f'<freejoint name="j{i}"/>'
+        inertial = (f'<inertial pos="0 0 0" mass="{_f(significant(b.mass))}" '
+                    f'fullinertia="{_f([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])}"/>')
+        bodies.append(f'<body name="body{i}" pos="{_f(c)}">{joints}{inertial}{"".join(geoms)}</body>')
+    g = settings.g
+    return (
+        f'<mujoco model="{model.name}">'
+        '<compiler boundmass="0" boundinertia="0" balanceinertia="false" inertiafromgeom="false"/>'
+        f'<option timestep="{_f(h)}" gravity="0 {_f(-g)} 0" integrator="{o.integrator}" cone="{o.cone}" '
+        f'solver="{o.solver}" iterations="{o.iterations}" tolerance="{_f(o.tolerance)}" '
+        f'noslip_iterations="{o.noslip_iterations}"{opt_extra}/>'
+        f'<asset>{"".join(assets)}</asset>'
+        f'<worldbody>{"".join(world)}{"".join(bodies)}</worldbody>'
+        '</mujoco>'
+    )
+
+
+class MuJoCoEngine(Engine):
+    name = "mujoco"
+
+    def __init__(self, options: MuJoCoOptions | None = None) -> None:
+        self.options = options or DEFAULT_OPTIONS
+        self._m = None
+        self._d = None
+
+    def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
+        import mujoco
+
+        if self._m is not None:
+            raise RuntimeError("engine already built")
+        self._mj = mujoco
+        self.model, self.settings = model, settings
+        self._m = mujoco.MjModel.from_xml_string(mjcf(model, settings, self.options, driven_base))
+        self._d = mujoco.MjData(self._m)
+        self._table = None
+        if driven_base:
+            j = mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_JOINT, "table")
+            self._table = (int(self._m.jnt_qposadr[j]), int(self._m.jnt_dofadr[j]))
+        self._nsub = substeps(settings.dt, self.options.max_dt)
+        self._bid = np.array([mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_BODY, f"body{i}")
+                              for i in range(model.n_bodies)])
+        # body index (-1 = base / world) of each MuJoCo body id
+        self._index = np.full(self._m.nbody, -1, int)
+        self._index[self._bid] = np.arange(model.n_bodies)
+        self._c0 = np.array([b.centroid for b in model.bodies], float)
+        self._planar = bool(settings.planar)
+        ndof = 3 if self._planar else 6
+        adr = self._m.jnt_dofadr[self._m.body_jntadr[self._bid]]
+        self._dof = (adr[:, None] + np.arange(ndof)[None, :]).ravel()
+        mujoco.mj_forward(self._m, self._d)
+
+    def set_gravity(self, vec) -> None:
+        self._m.opt.gravity[:] = accel(vec)
+
+    def step(self, n: int = 1) -> None:
+        self._mj.mj_step(self._m, self._d, nstep=n * self._nsub)
+
+    def drive_base(self, x: float, v: float) -> None:
+        if self._table is None:
+            raise RuntimeError("the base is fixed: build the engine with driven_base=True")
+        qa, da = self._table
+        # the velocity that ends this step at x (absorbing earlier drift; ~v); the heavy table
+        # keeps it through the sub-steps to within the arch's contact impulses / 1e6
+        self._d.qvel[da] = (x - float(self._d.qpos[qa])) / self.settings.dt
+
+    def base_motion(self) -> tuple[float, float]:
+        if self._table is None:
+            return 0.0, 0.0
+        qa, da = self._table
+        return float(self._d.qpos[qa]), float(self._d.qvel[da])
+
+    def poses(self) -> tuple[np.ndarray, np.ndarray]:
+        d = self._d
+        # xpos/xmat are of the last mj_step's forward pass start; recompute kinematics for the
+        # current qpos (cheap) so that poses are those at the end of the step
+        self._mj.mj_kinematics(self._m, d)
+        pos = d.xpos[self._bid].copy()
+        R = d.xmat[self._bid].reshape(-1, 3, 3).copy()
+        return pos, R
+
+    def velocities(self) -> tuple[np.ndarray, np.ndarray]:
+        d = self._d
+        qv = d.qvel[self._dof].reshape(-1, 6) if not self._planar else d.qvel[self._dof].reshape(-1, 3)
+        n = len(self._bid)
+        if self._planar:  # slide x, slide y, hinge z
+            v = np.zeros((n, 3))
+            w = np.zeros((n, 3))
+            v[:, :2] = qv[:, :2]
+            w[:, 2] = qv[:, 2]
+            return v, w
+        # free joint: linear velocity of the body origin (= centroid) in the world frame, angular
+        # velocity in the body frame
+        _, R = self.poses()
+        return qv[:, :3].copy(), np.einsum("nij,nj->ni", R, qv[:, 3:])
+
+    def contacts(self) -> Contacts:
+        m, d = self._m, self._d
+        nc = int(d.ncon)
+        a = np.empty(nc, int)
+        b = np.empty(nc, int)
+        pt = np.empty((nc, 3))
+        nrm = np.empty((nc, 3))
+        fn = np.empty(nc)
+        ft = np.empty((nc, 3))
+        f6 = np.zeros(6)
+        for k in range(nc):
+            c = d.contact[k]
+            self._mj.mj_contactForce(m, d, k, f6)
+            fr = np.asarray(c.frame).reshape(3, 3)
+            # MuJoCo: normal frame[0] points from geom1 to geom2; the force is the one geom1
+            # exerts on geom2. Interface convention: normal from b to a, friction force on a.
+            b[k] = self._index[m.geom_bodyid[c.geom1]]
+            a[k] = self._index[m.geom_bodyid[c.geom2]]
+            pt[k] = c.pos - 0.5 * c.dist * fr[0]
+            nrm[k] = fr[0]
+            fn[k] = f6[0]
+            ft[k] = f6[1] * fr[1] + f6[2] * fr[2]
+        return Contacts(a, b, pt, nrm, fn, ft)
+
+    def versions(self) -> dict:
+        import mujoco
+
+        return {"engine": self.name, "mujoco": mujoco.__version__, "mujoco_options": self.options.to_dict()}
+
+    def close(self) -> None:
+        self._m = None
+        self._d = None

@@ -1,0 +1,282 @@
+"""PyBullet backend (DIRECT mode; one physics client per instance).
+
+Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
+
+* every convex piece is a mesh shape loaded from its own OBJ file (unique temporary directory
+  per instance) with ``URDF_INITIALIZE_SAT_FEATURES`` so that face-face contacts get polyhedral
+  clipping (4 points per face, no ~1 mm hull margin), hulls offset outward by
+  ``settings.inflate``; bodies of several pieces are compound shapes;
+* body frame = principal frame at the centroid, mass and principal moments always passed
+  together; linear/angular damping 0 (Bullet's default damping 0.04 is not physical here);
+* Bullet combines the friction of a contact pair as the *product* of the two bodies'
+  coefficients: blocks get ``sqrt(mu_joint)``, the base ``mu_base / sqrt(mu_joint)``;
+* driven base (shake table): PyBullet has no kinematic bodies, so the base is a dynamic body
+  10^6 times heavier than the arch, its weight cancelled by an external force every step and
+  its velocity reset every step to the one that lands it on the prescribed position at the end
+  of the step (spec 04 §4.3: such a base tracked the motion to 0.3 um);
+* bodies are PyBullet multibodies (``useMaximalCoordinates`` off, the default). Maximal-coordinate
+  rigid bodies step about 2x faster here (0.52-0.61 against 1.0-1.2 ms per 0.5 ms step, glued
+  Sh06-Sd015, 100 iterations) but were rejected by measurement: with the default
+  ``solverResidualThreshold`` their solver stops early and a block with mu 0.3 sticks up to
+  lambda 0.325 (+8 %); with it at 0 the block still slides only at 0.307 (+2.3 %, past the 2 %
+  gate) because of the friction anchors, and without anchors free Sh06-Sd010 drifts 0.47 mm in
+  5 s at rest; contactBreakingThreshold 0.05-0.2 mm gave +0.9 to +2.4 % and 0.06-0.17 mm of drift
+  around the 0.1 mm gate. Multibodies: 0.301 and 0.085 / 0.063 mm (Sh06-Sd010 free / Sh1-Sd025 glued);
+* every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
+  gravity of every step) is first made machine-independent (:mod:`dem.core.engines.inputs`): near a
+  threshold a last-bit difference from numpy's or OpenBLAS's CPU-specific kernels moved a tilt
+  lambda from 0.14 % above to 5.5 % below the LP;
+* planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
+  zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
+  for free bodies).
+"""
+from __future__ import annotations
+
+import math
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from dem.core.engines.base import Contacts, Engine
+from dem.core.engines.inputs import accel, on_grid, principal_frame, significant
+from dem.core.model import Model
+from dem.core.settings import Settings
+from specimens.mesh import prism
+
+
+def _rot_to_quat(R: np.ndarray) -> tuple[float, float, float, float]:
+    from scipy.spatial.transform import Rotation
+
+    q = Rotation.from_matrix(R).as_quat()  # x, y, z, w
+    return tuple(float(x) for x in q)
+
+
+def _quat_to_rot(q) -> np.ndarray:
+    x, y, z, w = q
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+def offset_polygon(poly: np.ndarray, d: float) -> np.ndarray:
+    """Convex counter-clockwise polygon with every edge moved outward by ``d`` [m] along its
+    normal (faces stay parallel to the original ones, unlike a radial scaling of the vertices)."""
+    P = np.asarray(poly, float)
+    if d == 0:
+        return P.copy()
+    e = np.roll(P, -1, axis=0) - P
+    n = np.c_[e[:, 1], -e[:, 0]] / np.linalg.norm(e, axis=1, keepdims=True)  # outward for ccw
+    n_prev = np.roll(n, 1, axis=0)
+    return P + d * (n + n_prev) / (1.0 + (n * n_prev).sum(1, keepdims=True))
+
+
+def _write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
+    lines = [f"v {v[0]:.12g} {v[1]:.12g} {v[2]:.12g}" for v in vertices]
+    lines += [f"f {f[0] + 1} {f[1] + 1} {f[2] + 1}" for f in faces]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def _quiet(fn):
+    """Call ``fn`` with the process's C-level stdout sent to /dev/null (pybullet prints
+    ``argv[0]=`` on every connection, which would corrupt JSON output)."""
+    import os
+    import sys
+
+    sys.stdout.flush()
+    saved = os.dup(1)
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, 1)
+        return fn()
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
+        os.close(devnull)
+
+
+class PyBulletEngine(Engine):
+    name = "pybullet"
+
+    def __init__(self) -> None:
+        self._p = None
+        self._tmp: Path | None = None
+
+    # -- construction ---------------------------------------------------------------------
+    def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
+        import pybullet as pb
+        from pybullet_utils.bullet_client import BulletClient
+
+        if self._p is not None:
+            raise RuntimeError("engine already built")
+        self._pb = pb
+        self._p = p = _quiet(lambda: BulletClient(connection_mode=pb.DIRECT))
+        self._tmp = Path(tempfile.mkdtemp(prefix="archdem-pb-"))
+        self.model, self.settings = model, settings
+        p.setPhysicsEngineParameter(
+            fixedTimeStep=settings.dt, numSolverIterations=settings.solver_iterations, numSubSteps=0,
+            contactSlop=settings.contact_slop, warmStartingFactor=settings.warm_starting,
+            contactERP=settings.contact_erp, frictionERP=settings.friction_erp, deterministicOverlappingPairs=1,
+            restitutionVelocityThreshold=0.0 if settings.restitution > 0 else 0.2,
+        )
+        p.setGravity(0.0, -settings.g, 0.0)
+        flags = pb.URDF_INITIALIZE_SAT_FEATURES if settings.sat_features else 0
+        f_block = math.sqrt(settings.mu_joint)
+        f_base = settings.mu_base / f_block
+        n_files = [0]
+
+        def shape(polys, width, R, c, z_off):
+            files = []
+            for poly in polys:
+                if settings.inflate_normal:
+                    m = prism(offset_polygon(poly, settings.inflate), width + 2 * settings.inflate)
+                else:
+                    m = prism(poly, width, settings.inflate)
+                v = np.asarray(m.vertices, float).copy()
+                v[:, 2] += z_off
+                vb = on_grid((v - c) @ R)  # = R^T (v - c) row-wise, on the 1 nm grid (dem.core.engines.inputs)
+                f = self._tmp / f"piece{n_files[0]}.obj"
+                n_files[0] += 1
+                _write_obj(f, vb, np.asarray(m.faces))
+                files.append(str(f))
+            if len(files) == 1:
+                return p.createCollisionShape(pb.GEOM_MESH, fileName=files[0], flags=flags)
+            return p.createCollisionShapeArray([pb.GEOM_MESH] * len(files), fileNames=files, flags=[flags] * len(files))
+
+        # base: identity frame; static, or (driven) dynamic and heavy with its centre of mass at the origin
+        bshape = shape(model.base.pieces, model.base.width, np.eye(3), np.zeros(3), 0.0)
+        self._driven = bool(driven_base)
+        self._base_mass = 1e6 * sum(b.mass for b in model.bodies) if driven_base else 0.0
+        self._gravity = np.array([0.0, -settings.g, 0.0])
+        self._base = p.createMultiBody(baseMass=self._base_mass, baseCollisionShapeIndex=bshape)
+        p.changeDynamics(self._base, -1, lateralFriction=f_base, restitution=settings.restitution,
+                         rollingFriction=0.0, spinningFriction=0.0, frictionAnchor=int(settings.friction_anchor))
+        if driven_base:
+            p.changeDynamics(self._base, -1, linearDamping=0.0, angularDamping=0.0,
+                             activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
+        self._ids: list[int] = []
+        self._R0 = np.zeros((model.n_bodies, 3, 3))
+        for k, b in enumerate(model.bodies):
+            R, I, q = principal_frame(b.inertia)  # machine-independent (dem.core.engines.inputs)
+            c = on_grid(b.centroid)
+            mass = significant(b.mass)
+            s = shape(b.pieces, b.width, R, c, float(c[2]))
+            bid = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
+                                    baseOrientation=q)
+            p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],
+                             lateralFriction=f_block, restitution=settings.restitution,
+                             rollingFriction=0.0, spinningFriction=0.0, linearDamping=0.0, angularDamping=0.0,
+                             frictionAnchor=int(settings.friction_anchor),
+                             activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
+            self._ids.append(bid)
+            self._R0[k] = R
+        self._index = {bid: k for k, bid in enumerate(self._ids)}
+        self._index[self._base] = -1
+        self._planar = settings.planar
+        self._z0 = np.array([b.centroid[2] for b in model.bodies])
+
+    # -- running --------------------------------------------------------------------------
+    def set_gravity(self, vec) -> None:
+        self._gravity = vec = accel(vec)
+        self._p.setGravity(float(vec[0]), float(vec[1]), float(vec[2]))
+
+    def drive_base(self, x: float, v: float) -> None:
+        if not self._driven:
+            raise RuntimeError("the base is fixed: build the engine with driven_base=True")
+        p = self._p
+        pos, _ = p.getBasePositionAndOrientation(self._base)
+        dt = self.settings.dt
+        # the velocity that ends this step at x (it absorbs the drift of earlier steps; ~v), and
+        # back to y = z = 0; contact impulses of the arch change it by ~1e-6 within the step
+        p.resetBaseVelocity(self._base, ((x - pos[0]) / dt, -pos[1] / dt, -pos[2] / dt), (0.0, 0.0, 0.0))
+        # external forces last one step in PyBullet: cancel the base's weight for this step
+        f = (-self._base_mass * self._gravity).tolist()
+        p.applyExternalForce(self._base, -1, f, pos, self._pb.WORLD_FRAME)
+
+    def base_motion(self) -> tuple[float, float]:
+        if not self._driven:
+            return 0.0, 0.0
+        pos, _ = self._p.getBasePositionAndOrientation(self._base)
+        v, _ = self._p.getBaseVelocity(self._base)
+        return float(pos[0]), float(v[0])
+
+    def step(self, n: int = 1) -> None:
+        p = self._p
+        if not self._planar:
+            for _ in range(n):
+                p.stepSimulation()
+            return
+        for _ in range(n):
+            p.stepSimulation()
+            self._project()
+
+    def _project(self) -> None:
+        p = self._p
+        for k, bid in enumerate(self._ids):
+            pos, q = p.getBasePositionAndOrientation(bid)
+            v, w = p.getBaseVelocity(bid)
+            R = _quat_to_rot(q) @ self._R0[k].T
+            ang = math.atan2(R[1, 0], R[0, 0])
+            Rp = np.array([[math.cos(ang), -math.sin(ang), 0], [math.sin(ang), math.cos(ang), 0], [0, 0, 1]])
+            p.resetBasePositionAndOrientation(bid, (pos[0], pos[1], float(self._z0[k])), _rot_to_quat(Rp @ self._R0[k]))
+            p.resetBaseVelocity(bid, (v[0], v[1], 0.0), (0.0, 0.0, w[2]))
+
+    def poses(self) -> tuple[np.ndarray, np.ndarray]:
+        p = self._p
+        n = len(self._ids)
+        pos = np.empty((n, 3))
+        R = np.empty((n, 3, 3))
+        for k, bid in enumerate(self._ids):
+            x, q = p.getBasePositionAndOrientation(bid)
+            pos[k] = x
+            R[k] = _quat_to_rot(q) @ self._R0[k].T
+        return pos, R
+
+    def velocities(self) -> tuple[np.ndarray, np.ndarray]:
+        p = self._p
+        n = len(self._ids)
+        v = np.empty((n, 3))
+        w = np.empty((n, 3))
+        for k, bid in enumerate(self._ids):
+            v[k], w[k] = p.getBaseVelocity(bid)
+        return v, w
+
+    def contacts(self) -> Contacts:
+        cps = self._p.getContactPoints()
+        n = len(cps)
+        idx = self._index
+
+        def col(k: int, width: int = 3) -> np.ndarray:
+            return np.array([c[k] for c in cps], dtype=float).reshape(n, width)
+
+        a = np.array([idx.get(c[1], -1) for c in cps], dtype=int)
+        b = np.array([idx.get(c[2], -1) for c in cps], dtype=int)
+        # friction force: the two lateral friction forces along their directions
+        ft = col(10, 1) * col(11) + col(12, 1) * col(13)
+        return Contacts(a, b, col(6), col(7), col(9, 1).reshape(n), ft)
+
+    def versions(self) -> dict:
+        from dem.core.provenance import package_version
+
+        return {"engine": self.name, "pybullet": package_version("pybullet"),
+                "pybullet_api": int(self._pb.getAPIVersion()) if self._p is not None else None}
+
+    def close(self) -> None:
+        if self._p is not None:
+            try:
+                self._p.disconnect()
+            except Exception:  # pragma: no cover - already gone
+                pass
+            self._p = None
+        if self._tmp is not None:
+            shutil.rmtree(self._tmp, ignore_errors=True)
+            self._tmp = None
+
+    def __del__(self) -> None:  # pragma: no cover - safety net
+        try:
+            self.close()
+        except Exception:
+            pass

@@ -1,0 +1,51 @@
+"""Versions and platform facts stored with every result (reproducibility)."""
+from __future__ import annotations
+
+import platform
+import sys
+from importlib.metadata import PackageNotFoundError, version
+
+
+def package_version(name: str) -> str:
+    try:
+        return version(name)
+    except PackageNotFoundError:
+        return "not installed"
+
+
+def numpy_cpu() -> tuple[dict[str, bool], list[str]]:
+    """numpy's view of the CPU: its feature flags, and the SIMD targets it dispatches here."""
+    try:
+        from numpy._core import _multiarray_umath as mu
+    except ImportError:  # numpy < 2
+        from numpy.core import _multiarray_umath as mu
+    f = mu.__cpu_features__
+    return f, [t for t in mu.__cpu_dispatch__ if f.get(t)]
+
+
+def cpu_math() -> str:
+    """The CPU features that decide which math kernels run: glibc picks FMA variants of sin/cos
+    (called inside the engines) when the CPU has FMA and AVX2, so results can differ in the last
+    bit, and near a threshold by more, between CPUs with and without them (dem.core.engines.inputs)."""
+    f, _ = numpy_cpu()
+    libc = " ".join(platform.libc_ver()).strip() or "unknown libc"
+    return f"{platform.machine()} {libc}; " + " ".join(k for k in ("FMA3", "AVX2", "AVX512F") if f.get(k))
+
+
+def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
+    """Versions of archdem and the libraries whose numbers a result depends on."""
+    out = {"python": sys.version.split()[0], "platform": platform.platform(), "cpu_math": cpu_math()}
+    for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco") + tuple(extra):
+        out[name] = package_version(name)
+    return out
+
+
+def run_provenance(engine: str) -> dict:
+    """:func:`provenance` plus the engine's own description (name, version, engine options)."""
+    from dem.core.engines import get_engine
+
+    eng = get_engine(engine)
+    try:
+        return {**provenance(), **eng.versions()}
+    finally:
+        eng.close()

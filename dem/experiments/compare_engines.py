@@ -1,0 +1,162 @@
+"""Engine cross-check: the tilt test of a specimen run with each engine, at no sliding and at
+the reference friction, next to the discrete limit analysis (LP) of the same blocks.
+
+At no sliding the LP is exact for the discretised arch (spec §3.4.3), so each engine's error is
+measured against it. With Coulomb friction the associative LP is no bound (spec 04 §4.3); its
+value is reported for orientation only, and the engines are compared with each other.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+
+from specimens.constants import NO_SLIDING_MU
+from dem.core.settings import Settings
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.errors import ArchdemInputError
+
+FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
+
+
+@dataclass(frozen=True)
+class EngineTilt:
+    """One engine's tilt answer: lambda, mode, hinge joints, simulations, wall time [s]."""
+
+    engine: str
+    lam: float
+    mode: str
+    hinges: tuple
+    slides: tuple
+    n_sims: int
+    wall_s: float
+    version: str
+
+
+@dataclass(frozen=True)
+class ComparisonRow:
+    """A specimen at one friction case: LP value and each engine's tilt answer.
+
+    ``rel_diff`` = (lambda of the second engine - first) / first; ``err_vs_lp`` per engine =
+    (lambda - lambda_LP) / lambda_LP (meaningful as an error at no sliding only).
+    """
+
+    id: str
+    config: str
+    friction: str
+    mu_joint: float
+    mu_base: float
+    lp_lam: float
+    lp_hinges: tuple
+    results: dict = field(default_factory=dict)
+
+    @property
+    def engines(self) -> list[str]:
+        return list(self.results)
+
+    @property
+    def rel_diff(self) -> float:
+        e = self.engines
+        if len(e) < 2:
+            return float("nan")
+        a, b = self.results[e[0]].lam, self.results[e[1]].lam
+        return (b - a) / a
+
+    def err_vs_lp(self, engine: str) -> float:
+        if not (math.isfinite(self.lp_lam) and self.lp_lam > 0):
+            return float("nan")
+        return (self.results[engine].lam - self.lp_lam) / self.lp_lam
+
+    def to_dict(self) -> dict:
+        d = {k: v for k, v in asdict(self).items() if k != "results"}
+        d["lp_hinges"] = [list(h) for h in self.lp_hinges]
+        d["engines"] = {}
+        for name, r in self.results.items():
+            rd = asdict(r)
+            rd["hinges"] = [list(h) for h in r.hinges]
+            rd["slides"] = list(r.slides)
+            rd["err_vs_lp"] = self.err_vs_lp(name)
+            rd["hinges_match_lp"] = tuple(r.hinges) == tuple(self.lp_hinges)
+            d["engines"][name] = rd
+        d["rel_diff"] = self.rel_diff
+        return d
+
+
+def _engine_version(name: str) -> str:
+    from dem.core.provenance import package_version
+
+    return package_version(name)
+
+
+def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> EngineTilt:
+    """The hold-protocol tilt test of ``model`` with ``settings.engine`` (``assembly``: the blocks
+    ``model`` was built from, for the default LP-started bracket)."""
+    from dem.experiments.tilt import tilt
+
+    r = tilt(model, settings, protocol, assembly=assembly)
+    hinges = tuple((j.joint, j.face) for j in r.joints if j.state in ("hinge", "hinge+slide"))
+    slides = tuple(j.joint for j in r.joints if "slide" in j.state)
+    return EngineTilt(settings.engine, float(r.lam), r.mode, hinges, slides, int(r.n_sims), float(r.wall_s),
+                      _engine_version(settings.engine))
+
+
+def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+                     frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
+                     protocol=None) -> list[ComparisonRow]:
+    """Rows (one per friction case) for catalogue specimen ``sid``; ``base`` settings other than
+    friction and engine (e.g. ``dt``) apply to every run."""
+    import analytic.limit_discrete as lim
+    from dem.core.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    for f in frictions:
+        if f not in FRICTIONS:
+            raise ArchdemInputError(f"friction case must be one of {', '.join(FRICTIONS)}, got {f!r}")
+    if len(engines) < 1:
+        raise ArchdemInputError("give at least one engine")
+    base = base or Settings()
+    asm = discretise(get_specimen(sid).arch, config=config)
+    model = from_assembly(asm, name=sid)
+    rows = []
+    for f in frictions:
+        mj, mb = FRICTIONS[f]
+        lp = lim.solve_lp(asm, float("inf"), float("inf")) if f == "none" else lim.solve_lp(asm, mj, mb)
+        res = {e: engine_tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, asm) for e in engines}
+        rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res))
+    return rows
+
+
+def _one(args) -> list[ComparisonRow]:
+    return compare_specimen(*args)
+
+
+def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+            frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
+            workers: int = 1) -> list[ComparisonRow]:
+    """:func:`compare_specimen` for each id (in ``workers`` processes), rows in input order."""
+    jobs = [(sid, config, tuple(engines), tuple(frictions), base) for sid in ids]
+    if workers <= 1 or len(jobs) <= 1:
+        out = [_one(j) for j in jobs]
+    else:
+        from concurrent.futures import ProcessPoolExecutor
+
+        with ProcessPoolExecutor(min(workers, len(jobs))) as ex:
+            out = list(ex.map(_one, jobs))
+    return [r for rows in out for r in rows]
+
+
+def summary(rows: list[ComparisonRow]) -> dict:
+    """Aggregates: per engine the largest and mean |error vs LP| at no sliding, and the largest
+    |relative difference| between engines per friction case."""
+    out: dict = {"no_sliding_err_vs_lp": {}, "max_abs_rel_diff": {}}
+    ns = [r for r in rows if r.friction == "none"]
+    for e in (ns[0].engines if ns else []):
+        errs = [abs(r.err_vs_lp(e)) for r in ns]
+        out["no_sliding_err_vs_lp"][e] = {"max_abs": max(errs), "mean_abs": sum(errs) / len(errs),
+                                          "hinges_match": sum(tuple(r.results[e].hinges) == tuple(r.lp_hinges)
+                                                              for r in ns), "n": len(ns)}
+    for f in FRICTIONS:
+        d = [abs(r.rel_diff) for r in rows if r.friction == f and math.isfinite(r.rel_diff)]
+        if d:
+            out["max_abs_rel_diff"][f] = max(d)
+    return out

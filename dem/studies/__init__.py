@@ -1,0 +1,2 @@
+"""Studies: the sweep engine (cases on all cores or a Dask cluster, one HDF5 study file, resume)
+and the case functions it runs."""

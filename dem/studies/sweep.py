@@ -1,0 +1,510 @@
+"""Sweep engine: run a study (a list of independent cases) on local cores or a Dask cluster.
+
+A **study** is a list of cases — JSON-serialisable dicts of parameters — and a **case
+function** named by an importable ``"module:function"`` string (so that it reaches worker
+processes and Dask workers by name, not by pickling code). The function takes the case
+dict and returns a dict of results: numbers, booleans, strings, ``None``, numpy arrays or
+lists, and nested dicts of those.
+
+Execution (:func:`run_study`): a local ``ProcessPoolExecutor`` (``spawn`` start method, all
+cores by default) or, with ``scheduler="tcp://HOST:PORT"``, a ``dask.distributed.Client``;
+both go through the same ``submit`` / ``as_completed`` loop. Even ``workers=1`` runs in a
+worker process, so a crashing case cannot take the main process down.
+
+Storage: **one writer** — the main process — writes each finished case into the study's
+HDF5 file as soon as it completes, opening and closing the file for each case (closing
+flushes HDF5's metadata too, which a bare ``flush`` does not guarantee against a later
+kill). Layout::
+
+    /                attrs: archdem_study (layout version), case_function, study_attrs (JSON),
+                            seed (JSON), versions (JSON), created (UTC ISO time)
+    /cases/<key>     attrs: params (JSON), status ("ok" | "failed"), error (traceback text),
+                            wall (s), worker, finished (UTC ISO time)
+    /cases/<key>/results/<name>   one dataset (or group, for a nested dict) per result
+
+``<key>`` is :func:`case_key`: the first 16 hex digits of the SHA-256 of the case's
+canonical JSON (sorted keys), so the same parameters always map to the same group.
+
+Interruption and resume: Ctrl-C (``KeyboardInterrupt``) and a dead local worker
+(``BrokenProcessPool``, raised here as :class:`StudyInterrupted`) stop the study; every
+case finished before that point is already stored (finished results not yet collected are
+stored on the way out). Local pool workers ignore SIGINT and are terminated when the study
+stops, so they do not go on with queued cases; the cases that were running at that moment
+are lost and will run again. ``resume=True`` reopens the file, checks that its case
+function, study attributes and seed are the ones given (else :class:`ArchdemInputError`),
+skips the cases stored with status ``ok`` and **re-runs the failed ones** (a failure may be
+transient: a killed worker, a full disk; a deterministic failure simply fails again and is
+recorded again). Cases stored in the file but absent from ``cases`` are kept in the file;
+``resume=True`` on a file that does not exist yet starts a new study. A case group whose
+``status`` attribute is missing (written last) was interrupted while being written and
+counts as not stored.
+On a Dask cluster a worker that dies is retried by Dask; a case that kills workers
+repeatedly (``KilledWorker``) is recorded as failed.
+"""
+from __future__ import annotations
+
+import datetime as _dt
+import hashlib
+import importlib
+import json
+import math
+import os
+import socket
+import sys
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterator, Sequence
+
+import numpy as np
+
+from specimens.errors import ArchdemInputError
+from specimens.io import json_default
+
+LAYOUT_VERSION = 1
+
+
+class StudyInterrupted(RuntimeError):
+    """The study stopped early (a worker process died); finished cases are stored."""
+
+
+# ----------------------------------------------------------------------------- cases
+def canonical_json(obj: Any) -> str:
+    """Canonical JSON (sorted keys, no blanks, no NaN) used for keys and comparisons."""
+    try:
+        return json.dumps(obj, sort_keys=True, separators=(",", ":"), default=json_default, allow_nan=False)
+    except (TypeError, ValueError) as exc:
+        raise ArchdemInputError(f"study parameters must be JSON-serialisable and finite: {exc}") from None
+
+
+def case_key(case: dict) -> str:
+    """Stable key of a case: 16 hex digits of the SHA-256 of its canonical JSON."""
+    if not isinstance(case, dict):
+        raise ArchdemInputError(f"a case must be a dict of parameters, got {type(case).__name__}")
+    return hashlib.sha256(canonical_json(case).encode()).hexdigest()[:16]
+
+
+def resolve_function(spec: str):
+    """The callable named by ``"module:function"``."""
+    if not isinstance(spec, str) or spec.count(":") != 1:
+        raise ArchdemInputError(f"case function must be given as 'module:function', got {spec!r}")
+    mod, name = spec.split(":")
+    try:
+        fn = getattr(importlib.import_module(mod), name)
+    except (ImportError, AttributeError) as exc:
+        raise ArchdemInputError(f"cannot import case function {spec!r}: {exc}") from None
+    if not callable(fn):
+        raise ArchdemInputError(f"case function {spec!r} is not callable")
+    return fn
+
+
+def _run_case(func: str, case: dict) -> dict:
+    """Worker side: run one case, catching its exceptions (not KeyboardInterrupt/SystemExit)."""
+    t0 = time.perf_counter()
+    worker = f"{socket.gethostname()}:{os.getpid()}"
+    try:
+        results = resolve_function(func)(case)
+        if not isinstance(results, dict):
+            raise TypeError(f"case function returned {type(results).__name__}, not a dict")
+        return {"status": "ok", "results": results, "error": "", "wall": time.perf_counter() - t0, "worker": worker}
+    except Exception:  # noqa: BLE001 - every case error is recorded, the study goes on
+        return {"status": "failed", "results": {}, "error": traceback.format_exc(),
+                "wall": time.perf_counter() - t0, "worker": worker}
+
+
+# ----------------------------------------------------------------------------- records
+@dataclass
+class CaseRecord:
+    """One case of a study as stored: parameters, status, results or error, wall time [s]."""
+
+    key: str
+    params: dict
+    status: str
+    results: dict = field(default_factory=dict)
+    error: str = ""
+    wall: float = 0.0
+    worker: str = ""
+    finished: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "ok"
+
+
+@dataclass
+class StudyResult:
+    """The records of a study, in the order of the cases asked for, plus the file attributes."""
+
+    path: Path
+    attrs: dict
+    records: list[CaseRecord]
+
+    def __iter__(self) -> Iterator[CaseRecord]:
+        return iter(self.records)
+
+    def __len__(self) -> int:
+        return len(self.records)
+
+    def __getitem__(self, i: int) -> CaseRecord:
+        return self.records[i]
+
+    @property
+    def by_key(self) -> dict[str, CaseRecord]:
+        return {r.key: r for r in self.records}
+
+    @property
+    def ok(self) -> list[CaseRecord]:
+        return [r for r in self.records if r.status == "ok"]
+
+    @property
+    def failed(self) -> list[CaseRecord]:
+        return [r for r in self.records if r.status != "ok"]
+
+
+# ----------------------------------------------------------------------------- HDF5 values
+def _write_value(g, name: str, value: Any) -> None:
+    import h5py
+
+    if isinstance(value, dict):
+        sub = g.create_group(name)
+        sub.attrs["kind"] = "dict"
+        for k, v in value.items():
+            _write_value(sub, str(k), v)
+        return
+    if value is None:
+        d = g.create_dataset(name, data=h5py.Empty("f8"))
+        kind = "none"
+    elif isinstance(value, (bool, np.bool_)):
+        d, kind = g.create_dataset(name, data=bool(value)), "bool"
+    elif isinstance(value, (int, np.integer)):
+        d, kind = g.create_dataset(name, data=np.int64(value)), "int"
+    elif isinstance(value, (float, np.floating)):
+        d, kind = g.create_dataset(name, data=np.float64(value)), "float"
+    elif isinstance(value, str):
+        d, kind = g.create_dataset(name, data=value, dtype=h5py.string_dtype()), "str"
+    elif isinstance(value, (list, tuple)) and value and all(isinstance(v, str) for v in value):
+        d, kind = g.create_dataset(name, data=list(value), dtype=h5py.string_dtype()), "str_list"
+    else:
+        arr = np.asarray(value)
+        if arr.dtype == object or arr.dtype.kind in "US":
+            raise TypeError(f"result {name!r}: cannot store a value of type {type(value).__name__}")
+        d = g.create_dataset(name, data=arr)
+        kind = "list" if isinstance(value, (list, tuple)) else "array"
+    d.attrs["kind"] = kind
+
+
+def _read_value(obj) -> Any:
+    kind = obj.attrs.get("kind", "array")
+    if kind == "dict":
+        return {k: _read_value(obj[k]) for k in obj}
+    if kind == "none":
+        return None
+    if kind == "bool":
+        return bool(obj[()])
+    if kind == "int":
+        return int(obj[()])
+    if kind == "float":
+        return float(obj[()])
+    if kind == "str":
+        return obj.asstr()[()]
+    if kind == "str_list":
+        return list(obj.asstr()[()])
+    if kind == "list":
+        return obj[()].tolist()
+    return obj[()]
+
+
+def _now() -> str:
+    return _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")
+
+
+def _versions() -> dict:
+    from dem.core.provenance import provenance
+
+    return provenance(extra=("dask", "distributed", "tqdm"))
+
+
+def _write_case(path: Path, key: str, case: dict, out: dict) -> CaseRecord:
+    """Store one finished case (replacing an earlier failed entry) and close the file."""
+    import h5py
+
+    rec = CaseRecord(key, case, out["status"], out["results"], out["error"], float(out["wall"]),
+                     out.get("worker", ""), _now())
+    with h5py.File(path, "a") as f:
+        cases = f.require_group("cases")
+        if key in cases:
+            del cases[key]
+        g = cases.create_group(key)
+        g.attrs["params"] = canonical_json(case)
+        g.attrs["error"] = rec.error
+        g.attrs["wall"] = rec.wall
+        g.attrs["worker"] = rec.worker
+        g.attrs["finished"] = rec.finished
+        res = g.create_group("results")
+        try:
+            for k, v in rec.results.items():
+                _write_value(res, str(k), v)
+        except (TypeError, ValueError) as exc:  # an unstorable result makes the case failed
+            del g["results"]
+            g.create_group("results")
+            rec.status, rec.results = "failed", {}
+            rec.error = f"results could not be stored: {exc}"
+            g.attrs["error"] = rec.error
+        g.attrs["status"] = rec.status  # written last: a group without it is incomplete
+        f.flush()
+    return rec
+
+
+def _read_attrs(f) -> dict:
+    out = {}
+    for k in ("archdem_study", "case_function", "created"):
+        if k in f.attrs:
+            v = f.attrs[k]
+            out[k] = v.item() if hasattr(v, "item") else v
+    for k in ("study_attrs", "seed", "versions"):
+        if k in f.attrs:
+            out[k] = json.loads(f.attrs[k])
+    return out
+
+
+def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> StudyResult:
+    """Records stored in a study file (all of them, or those of ``cases`` in that order)."""
+    import h5py
+
+    path = Path(path)
+    try:
+        f = h5py.File(path, "r")
+    except FileNotFoundError:
+        raise ArchdemInputError(f"{path}: no such study file") from None
+    except OSError as exc:
+        raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({exc})") from None
+    with f:
+        if "archdem_study" not in f.attrs:
+            raise ArchdemInputError(f"{path}: not an archdem study file")
+        attrs = _read_attrs(f)
+        stored = f.get("cases", {})
+        keys = list(stored) if cases is None else [case_key(c) for c in cases]
+        records = []
+        for k in keys:
+            if k not in stored:
+                continue
+            g = stored[k]
+            if "status" not in g.attrs:  # interrupted while being written: not stored
+                continue
+            records.append(CaseRecord(
+                key=k, params=json.loads(g.attrs["params"]), status=str(g.attrs["status"]),
+                results={n: _read_value(g["results"][n]) for n in g["results"]},
+                error=str(g.attrs["error"]), wall=float(g.attrs["wall"]), worker=str(g.attrs["worker"]),
+                finished=str(g.attrs["finished"])))
+    return StudyResult(path, attrs, records)
+
+
+def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
+    """Create the study file, or check it for resuming; return the keys stored with status ok."""
+    import h5py
+
+    from specimens.io import atomic_path
+
+    params_json, seed_json = canonical_json(study_attrs), canonical_json(seed)
+    if path.exists():
+        if not resume:
+            raise ArchdemInputError(f"{path} exists; a study is never overwritten (resume it, or choose another file)")
+        try:
+            with h5py.File(path, "r") as f:
+                if "archdem_study" not in f.attrs:
+                    raise ArchdemInputError(f"{path}: not an archdem study file; cannot resume it")
+                have = (str(f.attrs["case_function"]), str(f.attrs["study_attrs"]), str(f.attrs["seed"]))
+                done = {k for k, g in f.get("cases", {}).items() if g.attrs.get("status") == "ok"}
+        except OSError as exc:
+            raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({exc})") from None
+        for what, old, new in (("case function", have[0], func), ("study parameters", have[1], params_json),
+                               ("seed", have[2], seed_json)):
+            if old != new:
+                raise ArchdemInputError(f"{path} holds a study with another {what} ({old} vs {new}); not resuming it")
+        return done
+    with atomic_path(path) as tmp:
+        with h5py.File(tmp, "w") as f:
+            f.attrs["archdem_study"] = LAYOUT_VERSION
+            f.attrs["case_function"] = func
+            f.attrs["study_attrs"] = params_json
+            f.attrs["seed"] = seed_json
+            f.attrs["versions"] = canonical_json(_versions())
+            f.attrs["created"] = _now()
+            f.create_group("cases")
+    return set()
+
+
+# ----------------------------------------------------------------------------- executors
+def _ignore_sigint() -> None:
+    """Pool worker initialiser: Ctrl-C is handled by the main process alone."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+class _LocalPool:
+    def __init__(self, workers: int):
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        self.ex = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
+                                      initializer=_ignore_sigint)
+
+    def submit(self, fn, *args):
+        return self.ex.submit(fn, *args)
+
+    def as_completed(self, futures):
+        from concurrent.futures import as_completed
+
+        return as_completed(futures)
+
+    def close(self, cancel: bool) -> None:
+        if cancel:
+            # stop the workers now: otherwise they would go on with the cases already queued
+            # to them, whose results nobody collects (ProcessPoolExecutor has no public API
+            # for this before Python 3.14)
+            procs = list((getattr(self.ex, "_processes", None) or {}).values())
+            self.ex.shutdown(wait=False, cancel_futures=True)
+            for p in procs:
+                if p.is_alive():
+                    p.terminate()
+        else:
+            self.ex.shutdown(wait=True)
+
+
+class _DaskPool:
+    def __init__(self, address: str):
+        from dem.core.extras import require
+
+        Client = require("distributed", "a Dask scheduler (--scheduler)").Client
+
+        try:
+            self.client = Client(address, timeout="20s")
+        except OSError as exc:
+            raise ArchdemInputError(f"cannot connect to the Dask scheduler {address}: {exc}") from None
+
+    def submit(self, fn, *args):
+        return self.client.submit(fn, *args, pure=False)
+
+    def as_completed(self, futures):
+        from distributed import as_completed
+
+        return as_completed(futures)
+
+    def close(self, cancel: bool) -> None:
+        self.client.close()
+
+
+def _crash_error(exc: BaseException) -> str | None:
+    """Error text if ``exc`` means 'the worker died running this case' on a Dask cluster."""
+    try:
+        from distributed.scheduler import KilledWorker
+    except ImportError:  # pragma: no cover
+        return None
+    if isinstance(exc, KilledWorker):
+        return f"worker died while running this case (dask KilledWorker: {exc})"
+    return None
+
+
+# ----------------------------------------------------------------------------- run
+def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, workers: int | None = None,
+              scheduler: str | None = None, resume: bool = False, progress: bool = True,
+              study_attrs: dict | None = None, seed: int | None = None) -> StudyResult:
+    """Run every case of a study and store each result in ``out_path`` as it finishes.
+
+    ``workers``: local processes (default: all cores); ignored with ``scheduler``, a Dask
+    scheduler address (``"tcp://HOST:PORT"``). ``study_attrs``: JSON-serialisable
+    parameters common to the study (checked on resume). ``seed``: recorded and checked on
+    resume; the engine does not use it (put per-case seeds into the cases). Returns the
+    records of ``cases`` in their order, read back from the file.
+    Raises :class:`ArchdemInputError` (bad cases, existing file without ``resume``, a
+    mismatching study on resume), :class:`StudyInterrupted` (a local worker died) and
+    ``KeyboardInterrupt``; in each case the finished cases are in the file.
+    """
+    path = Path(out_path)
+    cases = list(cases)
+    study_attrs = dict(study_attrs or {})
+    resolve_function(func)  # fail early, in the main process, on a bad name
+    keys = [case_key(c) for c in cases]
+    if len(set(keys)) != len(keys):
+        dup = next(c for c, k in zip(cases, keys) if keys.count(k) > 1)
+        raise ArchdemInputError(f"duplicate case in the study: {canonical_json(dup)}")
+    if workers is not None and (int(workers) != workers or workers < 1):
+        raise ArchdemInputError(f"workers must be a positive integer, got {workers!r}")
+    done = _open_study(path, func, study_attrs, seed, resume)
+    todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
+    if todo:
+        _execute(todo, func, path, workers, scheduler, progress)
+    return load_study(path, cases)
+
+
+def _execute(todo, func, path, workers, scheduler, progress) -> None:
+    from concurrent.futures.process import BrokenProcessPool
+
+    from tqdm import tqdm
+
+    pool = _DaskPool(scheduler) if scheduler else _LocalPool(min(int(workers or os.cpu_count() or 1), len(todo)))
+    bar = tqdm(total=len(todo), desc="cases", unit="case", file=sys.stderr, dynamic_ncols=True,
+               disable=not progress or not sys.stderr.isatty())
+    n_ok = n_failed = 0
+    written: set = set()
+    futures: dict = {}
+
+    def store(fut, out) -> None:
+        nonlocal n_ok, n_failed
+        key, case = futures[fut]
+        rec = _write_case(path, key, case, out)
+        written.add(fut)
+        if rec.ok:
+            n_ok += 1
+        else:
+            n_failed += 1
+            last = rec.error.strip().splitlines()[-1] if rec.error.strip() else "error"
+            tqdm.write(f"case {key} {canonical_json(case)} failed: {last}", file=sys.stderr)
+        bar.set_postfix(ok=n_ok, failed=n_failed, refresh=False)
+        bar.update(1)
+
+    cancel = True
+    try:
+        for key, case in todo:
+            futures[pool.submit(_run_case, func, case)] = (key, case)
+        for fut in pool.as_completed(list(futures)):
+            try:
+                out = fut.result()
+            except BrokenProcessPool:
+                raise StudyInterrupted(
+                    f"a worker process died; {n_ok + n_failed} finished cases of this run are stored in {path}; "
+                    f"resume the study to run the other {len(todo) - n_ok - n_failed}") from None
+            except Exception as exc:  # noqa: BLE001
+                msg = _crash_error(exc)
+                if msg is None:
+                    raise
+                out = {"status": "failed", "results": {}, "error": msg, "wall": math.nan, "worker": ""}
+            store(fut, out)
+        cancel = False
+    except BaseException:
+        # interrupted: keep whatever finished but was not collected yet, then stop
+        for fut in futures:
+            if fut not in written and _finished_ok(fut):
+                try:
+                    store(fut, fut.result())
+                except Exception:  # noqa: BLE001 - best effort while stopping
+                    pass
+        raise
+    finally:
+        bar.close()
+        pool.close(cancel)
+
+
+def _finished_ok(fut) -> bool:
+    """True if a (concurrent.futures or Dask) future finished with a returned value."""
+    try:
+        if not fut.done() or fut.cancelled():
+            return False
+        status = getattr(fut, "status", None)  # Dask futures
+        if status is not None:
+            return status == "finished"
+        return fut.exception(timeout=0) is None
+    except BaseException:  # noqa: BLE001
+        return False

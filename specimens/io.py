@@ -1,0 +1,97 @@
+"""File basics shared by every layer: atomic result files, output paths, one JSON encoder.
+
+A result is written to a temporary name beside the target and then renamed: an interrupted
+write leaves no half-written file under the final name, and an existing result is never
+silently replaced.
+"""
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Any, Iterator
+
+import numpy as np
+
+from specimens.errors import ArchdemInputError
+
+
+@contextlib.contextmanager
+def atomic_path(target: str | os.PathLike, overwrite: bool = False) -> Iterator[Path]:
+    """Yield a temporary path; on success it is renamed to ``target``.
+
+    Raises :class:`ArchdemInputError` if ``target`` exists and ``overwrite`` is False,
+    or if its directory cannot be created.
+    """
+    target = Path(target)
+    if target.exists() and not overwrite:
+        raise ArchdemInputError(f"{target} exists; an existing result is never overwritten (choose another --out)")
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ArchdemInputError(f"cannot create directory {target.parent}: {exc.strerror}") from None
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=target.parent)
+    os.close(fd)
+    tmp_path = Path(tmp)
+    try:
+        yield tmp_path
+        if target.exists() and not overwrite:
+            raise ArchdemInputError(f"{target} appeared while writing; not overwriting it")
+        # mkstemp creates 0600 files; give results the usual permissions of the umask
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp_path, 0o666 & ~umask)
+        os.replace(tmp_path, target)
+    finally:
+        if tmp_path.exists():
+            tmp_path.unlink()
+
+
+def unique_run_path(directory: str | os.PathLike, stem: str, suffix: str = ".h5") -> Path:
+    """A path ``directory/stem[-N]suffix`` that does not exist yet."""
+    directory = Path(directory)
+    p = directory / f"{stem}{suffix}"
+    n = 1
+    while p.exists():
+        n += 1
+        p = directory / f"{stem}-{n}{suffix}"
+    return p
+
+
+def writable_dir(path: str | os.PathLike) -> Path:
+    """Create ``path`` (a directory) or fail with a one-line input error."""
+    p = Path(path)
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ArchdemInputError(f"cannot create output directory {p}: {exc.strerror}") from None
+    if not os.access(p, os.W_OK):
+        raise ArchdemInputError(f"output directory {p} is not writable")
+    return p
+
+
+def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
+    """Check that ``path`` can be written (its directory exists or can be made)."""
+    p = Path(path)
+    writable_dir(p.parent if str(p.parent) else ".")
+    if p.exists() and not overwrite:
+        raise ArchdemInputError(f"{p} exists; not overwriting it (choose another name)")
+    return p
+
+
+def json_default(o: Any) -> Any:
+    """The JSON encoder of every archdem file and answer: numpy arrays and scalars, paths."""
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    if isinstance(o, (np.floating, np.integer, np.bool_)):
+        return o.item()
+    if isinstance(o, Path):
+        return str(o)
+    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+
+
+def to_json(obj: Any, **kw) -> str:
+    """``json.dumps`` with :func:`json_default`."""
+    return json.dumps(obj, default=json_default, **kw)

@@ -1,0 +1,52 @@
+"""The campaign's up-front estimate: what each simulator step will run (no simulation here)."""
+from pathlib import Path
+
+import pytest
+
+from dem.campaign.context import CampaignContext
+from dem.campaign.runner import all_steps
+from dem.campaign.estimate import estimate
+from specimens.catalogue import select_specimens
+
+
+@pytest.mark.parametrize("quick, units", [
+    # quick: 11 tilts at the reference friction; 2 specimens x (4 frictions + 1 bisection);
+    # Sh02-Sd020 at 2 and 6 Hz; one record
+    (True, {"tilt": 11, "map": 10, "shake": 2, "record": 1}),
+    # full: 11 x 2 frictions; 11 x (13 + 3); the six Sd = 0.15 / 0.20 specimens x 5 frequencies; 3 records
+    (False, {"tilt": 22, "map": 176, "shake": 30, "record": 3}),
+])
+def test_estimate_counts_the_work_of_each_step(quick, units, tmp_path):
+    ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=quick, workers=2)
+    est = estimate(ctx, list(all_steps()))
+    assert {k: v["units"] for k, v in est.items()} == units
+    assert all(v["wall_s"] > 0 for v in est.values())
+    one_core = estimate(CampaignContext(out=Path(tmp_path), specimens=ctx.specimens, quick=quick, workers=1),
+                        ["tilt"])
+    assert one_core["tilt"]["wall_s"] == pytest.approx(2 * est["tilt"]["wall_s"])
+
+
+def test_estimate_only_for_requested_simulator_steps(tmp_path):
+    ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=True, workers=2)
+    assert set(estimate(ctx, ["catalogue", "analytic", "tilt"])) == {"tilt"}
+
+
+def test_estimate_scales_with_the_measured_machine_speed(tmp_path):
+    """A machine twice as slow per simulated second as the reference gets twice the estimate."""
+    from dem.campaign.estimate import REFERENCE_SPEED
+
+    ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=True, workers=2)
+    base = estimate(ctx, list(all_steps()))
+    same = estimate(ctx, list(all_steps()), speed=REFERENCE_SPEED["pybullet"])
+    slow = estimate(ctx, list(all_steps()), speed=2 * REFERENCE_SPEED["pybullet"])
+    for k in base:
+        assert same[k]["wall_s"] == pytest.approx(base[k]["wall_s"])
+        assert slow[k]["wall_s"] == pytest.approx(2 * base[k]["wall_s"])
+
+
+@pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
+def test_machine_speed_times_the_engine_it_is_given(engine):
+    from dem.campaign.estimate import machine_speed
+
+    s = machine_speed(engine, steps=20, repeats=1)
+    assert 0 < s < 1e3  # wall seconds per simulated second: positive and finite

@@ -1,0 +1,44 @@
+"""``archdem tilt``: JSON keys, result file, exit 2 on bad input."""
+import json
+
+import numpy as np
+import pytest
+
+from dem.cli import main
+
+
+def test_bad_input_exit_2(capsys):
+    assert main(["tilt", "NOPE"]) == 2
+    assert main(["tilt", "Sh02-Sd015", "--mu-joint", "-1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 2 and "archdem: error" in err
+
+
+def test_tilt_json(tmp_path, capsys):
+    # a small arch (2 voussoirs per side, glued: 3 bodies) keeps this fast
+    out = tmp_path / "runs"
+    rc = main(["tilt", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--json",
+               "--out", str(out), "--plot", str(tmp_path / "f.png")])
+    assert rc == 0
+    d = json.loads(capsys.readouterr().out)
+    for k in ("lambda", "theta_deg", "mode", "joints", "bracket", "n_sims", "wall_s", "result_file"):
+        assert k in d
+    assert d["bracket"][0] <= d["lambda"] <= d["bracket"][1]
+    assert {"joint", "state"} <= set(d["joints"][0])
+    assert (tmp_path / "f.png").stat().st_size > 0
+    from dem.formats.tilt import load_result
+
+    assert load_result(d["result_file"]).lam == pytest.approx(d["lambda"])
+
+
+def test_tilt_full_hold_is_stored(tmp_path, capsys):
+    # --full-hold switches the hold's rest rule off; the result file says so (rest_after null)
+    from dem.formats.tilt import load_result
+
+    args = ["tilt", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--json", "--out", str(tmp_path)]
+    assert main(args + ["--full-hold"]) == 0
+    full = load_result(json.loads(capsys.readouterr().out)["result_file"])
+    assert main(args) == 0
+    rest = load_result(json.loads(capsys.readouterr().out)["result_file"])
+    assert full.protocol.rest_after is None and rest.protocol.rest_after == 0.5
+    assert np.isnan(full.stable.t_rest)

@@ -1,0 +1,204 @@
+"""The sweep engine (dem/studies/sweep.py): one writer, resume, failures, local pool vs Dask.
+
+The case function is ``dem.studies.selftest_cases:evaluate`` (in the package, so spawned pool
+workers and Dask workers import it by name). Evaluations are counted by the files the
+case function writes into ``count_dir``. The independent truth for results is the same
+function called directly in this process.
+"""
+from __future__ import annotations
+
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from dem.studies.selftest_cases import evaluate
+from dem.studies.sweep import StudyInterrupted, case_key, load_study, run_study
+from specimens.errors import ArchdemInputError
+
+FUNC = "dem.studies.selftest_cases:evaluate"
+
+
+def _cases(n, count_dir=None, **extra):
+    out = []
+    for i in range(n):
+        c = {"x": i, **extra}
+        if count_dir is not None:
+            c["count_dir"] = str(count_dir)
+        out.append(c)
+    return out
+
+
+def _counts(count_dir: Path) -> Counter:
+    return Counter(int(p.name.split("-")[0]) for p in count_dir.iterdir())
+
+
+def _assert_same(a, b):
+    """Two result dicts are equal (arrays elementwise, everything else by ==)."""
+    assert a.keys() == b.keys()
+    for k in a:
+        if isinstance(a[k], dict):
+            _assert_same(a[k], b[k])
+        elif isinstance(a[k], np.ndarray) or isinstance(b[k], np.ndarray):
+            np.testing.assert_array_equal(a[k], b[k])
+        else:
+            assert a[k] == b[k] and type(a[k]) is type(b[k]), (k, a[k], b[k])
+
+
+def test_results_identical_with_1_and_2_workers_and_equal_direct_call(tmp_path):
+    cases = _cases(8)
+    r1 = run_study(cases, FUNC, tmp_path / "w1.h5", workers=1, progress=False)
+    r2 = run_study(cases, FUNC, tmp_path / "w2.h5", workers=2, progress=False)
+    assert [r.key for r in r1] == [r.key for r in r2] == [case_key(c) for c in cases]
+    for a, b, c in zip(r1, r2, cases):
+        assert a.status == b.status == "ok"
+        _assert_same(a.results, b.results)
+        # stored and read back == computed directly (lists of strings come back as lists)
+        _assert_same(a.results, evaluate(c))
+    # load_study gives the same records as run_study returned
+    again = load_study(tmp_path / "w2.h5", cases)
+    for a, b in zip(r2, again):
+        assert (a.key, a.params, a.status, a.error, a.wall) == (b.key, b.params, b.status, b.error, b.wall)
+        _assert_same(a.results, b.results)
+    assert again.attrs["case_function"] == FUNC
+    assert {"archdem", "python", "numpy", "h5py"} <= set(again.attrs["versions"])
+
+
+def test_failing_case_recorded_others_complete(tmp_path, capsys):
+    cases = _cases(5)
+    cases[2]["fail"] = True
+    res = run_study(cases, FUNC, tmp_path / "s.h5", workers=2, progress=False)
+    assert [r.status for r in res] == ["ok", "ok", "failed", "ok", "ok"]
+    bad = res[2]
+    assert "Traceback" in bad.error and "ValueError: case x=2 fails on purpose" in bad.error
+    assert bad.results == {}
+    stored = load_study(tmp_path / "s.h5").by_key[bad.key]
+    assert stored.status == "failed" and stored.error == bad.error
+    err = capsys.readouterr().err
+    assert sum("failed: ValueError: case x=2 fails on purpose" in line for line in err.splitlines()) == 1
+
+
+def test_refuses_to_overwrite_and_to_resume_another_study(tmp_path):
+    p = tmp_path / "s.h5"
+    run_study(_cases(2), FUNC, p, workers=1, progress=False, study_attrs={"config": "glued"})
+    before = p.read_bytes()
+    with pytest.raises(ArchdemInputError, match="never overwritten"):
+        run_study(_cases(2), FUNC, p, workers=1, progress=False, study_attrs={"config": "glued"})
+    with pytest.raises(ArchdemInputError, match="study parameters"):
+        run_study(_cases(2), FUNC, p, resume=True, progress=False, study_attrs={"config": "free"})
+    with pytest.raises(ArchdemInputError, match="case function"):
+        run_study(_cases(2), "dem.studies.selftest_cases:_take", p, resume=True, progress=False,
+                  study_attrs={"config": "glued"})
+    with pytest.raises(ArchdemInputError, match="seed"):
+        run_study(_cases(2), FUNC, p, resume=True, progress=False, study_attrs={"config": "glued"}, seed=3)
+    assert p.read_bytes() == before  # nothing touched the existing study
+    with pytest.raises(ArchdemInputError, match="duplicate"):
+        run_study(_cases(2) + _cases(1), FUNC, tmp_path / "d.h5", progress=False)
+    with pytest.raises(ArchdemInputError, match="module:function"):
+        run_study(_cases(1), "no_colon", tmp_path / "e.h5", progress=False)
+
+
+def test_resume_subset_then_full_evaluates_each_case_once(tmp_path):
+    counts = tmp_path / "counts"
+    counts.mkdir()
+    cases = _cases(10, counts)
+    p = tmp_path / "s.h5"
+    run_study(cases[:4], FUNC, p, workers=2, progress=False)
+    res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
+    assert all(r.ok for r in res) and len(res) == 10
+    assert _counts(counts) == Counter(range(10))  # every case exactly once over both runs
+
+
+def test_resume_retries_failed_cases_only(tmp_path):
+    counts = tmp_path / "counts"
+    counts.mkdir()
+    marker = tmp_path / "fail-once"
+    marker.touch()
+    cases = _cases(6, counts)
+    cases[3]["fail_marker"] = str(marker)
+    p = tmp_path / "s.h5"
+    first = run_study(cases, FUNC, p, workers=2, progress=False)
+    assert [r.status for r in first].count("failed") == 1 and not first[3].ok
+    second = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
+    assert all(r.ok for r in second)
+    assert _counts(counts) == Counter({0: 1, 1: 1, 2: 1, 3: 2, 4: 1, 5: 1})
+
+
+def test_crashed_worker_loses_and_repeats_nothing_finished(tmp_path):
+    counts = tmp_path / "counts"
+    counts.mkdir()
+    marker = tmp_path / "crash-once"
+    marker.touch()
+    cases = _cases(10, counts)
+    cases[5]["crash_marker"] = str(marker)  # the worker running case 5 dies (os._exit) the first time
+    p = tmp_path / "s.h5"
+    with pytest.raises(StudyInterrupted, match="resume"):
+        run_study(cases, FUNC, p, workers=2, progress=False)
+    stored_first = {r.key for r in load_study(p) if r.ok}
+    assert case_key(cases[5]) not in stored_first
+    assert 1 <= len(stored_first) < 10  # a real interruption: some stored, some not
+    after_first = _counts(counts)
+    res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
+    assert all(r.ok for r in res)
+    total = _counts(counts)
+    for i, c in enumerate(cases):
+        if case_key(c) in stored_first:
+            assert total[i] == after_first[i] == 1  # stored cases are not evaluated again
+        else:
+            # not stored: run (again) on resume; at most once more than before (it may have
+            # been running in the other worker when the pool broke — in-flight work is lost)
+            assert total[i] == after_first[i] + 1
+    assert len(load_study(p)) == 10
+
+
+def test_keyboard_interrupt_keeps_finished_cases(tmp_path):
+    counts = tmp_path / "counts"
+    counts.mkdir()
+    marker = tmp_path / "interrupt-once"
+    marker.touch()
+    cases = _cases(6, counts)
+    cases[3]["interrupt_marker"] = str(marker)
+    p = tmp_path / "s.h5"
+    with pytest.raises(KeyboardInterrupt):
+        run_study(cases, FUNC, p, workers=1, progress=False)
+    stored_first = {r.key for r in load_study(p)}
+    # one worker runs the cases in order: 0-2 finished (and are stored) before 3 interrupted
+    assert {case_key(c) for c in cases[:3]} <= stored_first and case_key(cases[3]) not in stored_first
+    after_first = _counts(counts)
+    res = run_study(cases, FUNC, p, workers=1, resume=True, progress=False)
+    assert all(r.ok for r in res)
+    total = _counts(counts)
+    for i, c in enumerate(cases):
+        assert total[i] == after_first[i] + (case_key(c) not in stored_first)
+
+
+def test_dask_local_cluster_gives_same_results_as_local_pool(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    cases = _cases(6)
+    cases[4]["fail"] = True
+    local = run_study(cases, FUNC, tmp_path / "local.h5", workers=2, progress=False)
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                  dashboard_address=None) as cluster:
+        remote = run_study(cases, FUNC, tmp_path / "dask.h5", scheduler=cluster.scheduler_address, progress=False)
+    assert [r.status for r in remote] == [r.status for r in local]
+    for a, b in zip(local, remote):
+        assert a.key == b.key and a.params == b.params
+        _assert_same(a.results, b.results)
+    assert remote[4].error.splitlines()[-1] == local[4].error.splitlines()[-1]
+
+
+def test_case_interrupted_while_written_counts_as_not_stored(tmp_path):
+    import h5py
+
+    counts = tmp_path / "counts"
+    counts.mkdir()
+    cases = _cases(4, counts)
+    p = tmp_path / "s.h5"
+    run_study(cases, FUNC, p, workers=2)  # default progress=True: disabled off a terminal
+    with h5py.File(p, "a") as f:  # a kill between the group's data and its status attribute
+        del f["cases"][case_key(cases[1])].attrs["status"]
+    assert case_key(cases[1]) not in load_study(p).by_key
+    res = run_study(cases, FUNC, p, workers=2, resume=True)
+    assert all(r.ok for r in res)
+    assert _counts(counts) == Counter({0: 1, 1: 2, 2: 1, 3: 1})
