@@ -51,8 +51,8 @@ def record_window(path: str, t_start: float, t_end: float):
 
 
 def _record_path() -> Path:
-    """The shared El Centro record, shipped with the project's test data."""
-    return Path(__file__).resolve().parents[1] / "tests" / "data" / "ground_motions" / RECORD_FILE
+    """The shared El Centro record, shipped with the project's test data (repository root: two folders up)."""
+    return Path(__file__).resolve().parents[2] / "tests" / "data" / "ground_motions" / RECORD_FILE
 
 
 

@@ -50,3 +50,9 @@ def test_machine_speed_times_the_engine_it_is_given(engine):
 
     s = machine_speed(engine, steps=20, repeats=1)
     assert 0 < s < 1e3  # wall seconds per simulated second: positive and finite
+
+
+def test_the_record_step_finds_its_record():
+    from dem.campaign.step_record import _record_path
+
+    assert _record_path().is_file()
