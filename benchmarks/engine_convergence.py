@@ -20,6 +20,7 @@ OUT = Path(__file__).resolve().parent / "results"
 def main() -> None:
     from specimens.io import atomic_path
     from dem.experiments.compare_engines import FRICTIONS, engine_tilt
+    from dem.experiments.tilt_check import reference_lp
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from specimens.blocks import discretise
@@ -45,9 +46,7 @@ def main() -> None:
                      "slides": list(r.slides), "n_sims": r.n_sims, "wall_s": time.perf_counter() - t0,
                      "load_avg_1min": os.getloadavg()[0]})
         print(json.dumps(rows[-1]), flush=True)
-    import analytic.limit_discrete as lim
-
-    lp = lim.solve_lp(asm, mj, mb) if a.friction == "reference" else lim.solve_lp(asm, float("inf"), float("inf"))
+    lp = reference_lp(asm, mj, mb)
     res = {"id": a.id, "config": a.config, "friction": a.friction, "mu_joint": mj, "mu_base": mb,
            "lp_lambda": float(lp.lam), "lp_note": "associative LP (no bound with Coulomb friction)"
            if a.friction == "reference" else "exact at no sliding", "rows": rows}

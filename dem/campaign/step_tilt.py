@@ -1,7 +1,6 @@
 """The tilt step: the virtual tilt test of every specimen against limit analysis."""
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -23,7 +22,7 @@ def _tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
 # ------------------------------------------------------------------------------------ tilt
 def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     """Tilt test of every specimen at the reference friction and with no sliding, beside the LP."""
-    from analytic.limit_discrete import solve_lp
+    from dem.experiments.tilt_check import check, reference_lp
     from dem.studies.cases import DEM_CASE, make_case
     from dem.studies.sweep import case_key, run_study
     from specimens.blocks import discretise
@@ -42,23 +41,28 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     rows = []
     for s in ctx.specimens:
         asm = discretise(s.arch, config=ctx.config)
-        lp_ns = solve_lp(asm, math.inf, math.inf).lam
-        lp_ref = solve_lp(asm, REFERENCE_MU_JOINT, REFERENCE_MU_BASE).lam
+        lp = {k: reference_lp(asm, mj, mb) for k, (mj, mb) in
+              (("reference", (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)), ("no_sliding", (NO_SLIDING_MU, NO_SLIDING_MU)))}
         out = {"id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6)}
-        for k in frictions:
+        rows_k = {}
+        for k, (mj, mb) in frictions.items():
             rec = by_key.get(case_key(cases[(s.id, k)]))
             ok = rec is not None and rec.ok
             res_k = rec.results if ok else {}
-            joints = zip(res_k.get("joint_names") or [], res_k.get("joint_states") or [])
-            out[f"lambda_dem_{k}"] = float(res_k["lambda"]) if ok else float("nan")
-            out[f"mode_{k}"] = str(res_k["mode"]) if ok else "failed"
-            out[f"joints_{k}"] = " ".join(f"{n}:{st}" for n, st in joints if st != "closed")
-            out[f"n_sims_{k}"] = int(res_k.get("n_sims", 0)) if ok else 0
-        out["lambda_lp_reference"] = lp_ref
-        out["err_reference_vs_lp_pct"] = 100 * (out["lambda_dem_reference"] - lp_ref) / lp_ref
-        out["lambda_lp_no_sliding"] = lp_ns
+            states = list(zip(res_k.get("joint_names") or [], res_k.get("joint_states") or [],
+                              res_k.get("joint_faces") or []))
+            rows_k[k] = row = check(s.id, asm, ctx.engine, mj, mb, float(res_k["lambda"]) if ok else float("nan"),
+                                    str(res_k["mode"]) if ok else "failed", states,
+                                    int(res_k.get("n_sims", 0)) if ok else 0, lp=lp[k])
+            out[f"lambda_dem_{k}"] = row.lam
+            out[f"mode_{k}"] = row.mode
+            out[f"joints_{k}"] = " ".join(f"{n}:{st}" for n, st, _ in states if st != "closed")
+            out[f"n_sims_{k}"] = row.n_sims
+        out["lambda_lp_reference"] = lp["reference"].lam
+        out["err_reference_vs_lp_pct"] = rows_k["reference"].err_pct
+        out["lambda_lp_no_sliding"] = lp["no_sliding"].lam
         if "no_sliding" in frictions:
-            out["err_no_sliding_pct"] = 100 * (out["lambda_dem_no_sliding"] - lp_ns) / lp_ns
+            out["err_no_sliding_pct"] = rows_k["no_sliding"].err_pct
             out["ratio_reference_to_no_sliding"] = out["lambda_dem_reference"] / out["lambda_dem_no_sliding"]
         rows.append(out)
     _write_csv(d / "tilt.csv", rows)

@@ -8,33 +8,21 @@ value is reported for orientation only, and the engines are compared with each o
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 
 from specimens.constants import NO_SLIDING_MU
 from dem.core.settings import Settings
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from dem.experiments.tilt_check import TiltCheck, check_result, reference_lp
 from specimens.errors import ArchdemInputError
 
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
 
 
 @dataclass(frozen=True)
-class EngineTilt:
-    """One engine's tilt answer: lambda, mode, hinge joints, simulations, wall time [s]."""
-
-    engine: str
-    lam: float
-    mode: str
-    hinges: tuple
-    slides: tuple
-    n_sims: int
-    wall_s: float
-    version: str
-
-
-@dataclass(frozen=True)
 class ComparisonRow:
-    """A specimen at one friction case: LP value and each engine's tilt answer.
+    """A specimen at one friction case: the LP of its blocks and each engine's tilt test
+    (:class:`dem.experiments.tilt_check.TiltCheck`), with the engines' versions.
 
     ``rel_diff`` = (lambda of the second engine - first) / first; ``err_vs_lp`` per engine =
     (lambda - lambda_LP) / lambda_LP (meaningful as an error at no sliding only).
@@ -48,6 +36,7 @@ class ComparisonRow:
     lp_lam: float
     lp_hinges: tuple
     results: dict = field(default_factory=dict)
+    versions: dict = field(default_factory=dict)
 
     @property
     def engines(self) -> list[str]:
@@ -62,21 +51,17 @@ class ComparisonRow:
         return (b - a) / a
 
     def err_vs_lp(self, engine: str) -> float:
-        if not (math.isfinite(self.lp_lam) and self.lp_lam > 0):
-            return float("nan")
-        return (self.results[engine].lam - self.lp_lam) / self.lp_lam
+        return self.results[engine].rel_err
 
     def to_dict(self) -> dict:
-        d = {k: v for k, v in asdict(self).items() if k != "results"}
+        d = {k: getattr(self, k) for k in ("id", "config", "friction", "mu_joint", "mu_base", "lp_lam")}
         d["lp_hinges"] = [list(h) for h in self.lp_hinges]
         d["engines"] = {}
         for name, r in self.results.items():
-            rd = asdict(r)
-            rd["hinges"] = [list(h) for h in r.hinges]
-            rd["slides"] = list(r.slides)
-            rd["err_vs_lp"] = self.err_vs_lp(name)
-            rd["hinges_match_lp"] = tuple(r.hinges) == tuple(self.lp_hinges)
-            d["engines"][name] = rd
+            d["engines"][name] = {"engine": name, "lam": r.lam, "mode": r.mode, "hinges": [list(h) for h in r.hinges],
+                                  "slides": list(r.slides), "n_sims": r.n_sims, "wall_s": r.wall_s,
+                                  "version": self.versions.get(name, ""), "err_vs_lp": r.rel_err,
+                                  "hinges_match_lp": r.hinges_match_lp}
         d["rel_diff"] = self.rel_diff
         return d
 
@@ -87,16 +72,13 @@ def _engine_version(name: str) -> str:
     return package_version(name)
 
 
-def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> EngineTilt:
-    """The hold-protocol tilt test of ``model`` with ``settings.engine`` (``assembly``: the blocks
-    ``model`` was built from, for the default LP-started bracket)."""
+def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> TiltCheck:
+    """The hold-protocol tilt test of ``model`` with ``settings.engine`` beside the LP of its blocks
+    (``assembly``: default the model's own)."""
     from dem.experiments.tilt import tilt
 
-    r = tilt(model, settings, protocol, assembly=assembly)
-    hinges = tuple((j.joint, j.face) for j in r.joints if j.state in ("hinge", "hinge+slide"))
-    slides = tuple(j.joint for j in r.joints if "slide" in j.state)
-    return EngineTilt(settings.engine, float(r.lam), r.mode, hinges, slides, int(r.n_sims), float(r.wall_s),
-                      _engine_version(settings.engine))
+    assembly = model.assembly if assembly is None else assembly
+    return check_result(tilt(model, settings, protocol, assembly=assembly), assembly)
 
 
 def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
@@ -104,8 +86,8 @@ def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] =
                      protocol=None) -> list[ComparisonRow]:
     """Rows (one per friction case) for catalogue specimen ``sid``; ``base`` settings other than
     friction and engine (e.g. ``dt``) apply to every run."""
-    import analytic.limit_discrete as lim
     from dem.core.model import from_assembly
+    from dem.experiments.tilt import tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -120,9 +102,11 @@ def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] =
     rows = []
     for f in frictions:
         mj, mb = FRICTIONS[f]
-        lp = lim.solve_lp(asm, float("inf"), float("inf")) if f == "none" else lim.solve_lp(asm, mj, mb)
-        res = {e: engine_tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, asm) for e in engines}
-        rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res))
+        lp = reference_lp(asm, mj, mb)
+        res = {e: check_result(tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, assembly=asm), asm, lp)
+               for e in engines}
+        rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res,
+                                  {e: _engine_version(e) for e in engines}))
     return rows
 
 

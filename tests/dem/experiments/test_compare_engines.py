@@ -4,14 +4,15 @@ import math
 
 import pytest
 
-from dem.experiments.compare_engines import ComparisonRow, EngineTilt, compare_specimen, summary
+from dem.experiments.compare_engines import ComparisonRow, compare_specimen, summary
+from dem.experiments.tilt_check import TiltCheck
 
 pytest.importorskip("mujoco")
 
 
 def _row(friction, lp, lams, hinges=(("L1", "intrados"),)):
-    res = {e: EngineTilt(e, lam, "rocking", hinges, (), 5, 1.0, "x") for e, lam in lams.items()}
-    return ComparisonRow("S", "glued", friction, 10.0, 10.0, lp, hinges, res)
+    res = {e: TiltCheck("S", "glued", e, 10.0, 10.0, lam, "rocking", hinges, (), 5, 1.0, lp, hinges) for e, lam in lams.items()}
+    return ComparisonRow("S", "glued", friction, 10.0, 10.0, lp, hinges, res, {e: "x" for e in lams})
 
 
 def test_row_arithmetic_and_summary():
