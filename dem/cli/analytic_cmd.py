@@ -4,23 +4,30 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir
+from dem.cli.common import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir
 from analytic.summary import analyse
 from specimens.errors import ArchdemInputError
 
 
 def register(sub) -> None:
+    from specimens.blocks import discretise
+    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
     p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar",
                        description=__doc__.splitlines()[0])
     add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default="glued", help="discrete configuration")
-    p.add_argument("--mu-joint", type=float, default=None, help="block-block friction (default 0.577)")
-    p.add_argument("--mu-base", type=float, default=None, help="block-base friction (default 1.0)")
-    p.add_argument("--effective-thickness", type=float, default=1.0,
-                   help="fraction of t kept about Rp in the continuous analysis (default 1)")
-    p.add_argument("--contact-fraction", type=float, default=1.0,
-                   help="central fraction of every joint in contact, discrete analyses (default 1)")
-    p.add_argument("--min-spacing", type=float, default=0.0, help="least hinge spacing [rad] (continuous)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"),
+                   help="discrete configuration")
+    p.add_argument("--mu-joint", type=float, default=None, help=f"block-block friction (default {REFERENCE_MU_JOINT:g})")
+    p.add_argument("--mu-base", type=float, default=None, help=f"block-base friction (default {REFERENCE_MU_BASE:g})")
+    p.add_argument("--effective-thickness", type=float, default=default_of(analyse, "effective_thickness"),
+                   help="fraction of t kept about Rp in the continuous analysis "
+                        f"(default {default_of(analyse, 'effective_thickness'):g})")
+    p.add_argument("--contact-fraction", type=float, default=default_of(analyse, "contact_fraction"),
+                   help="central fraction of every joint in contact, discrete analyses "
+                        f"(default {default_of(analyse, 'contact_fraction'):g})")
+    p.add_argument("--min-spacing", type=float, default=default_of(analyse, "min_spacing"),
+                   help=f"least hinge spacing [rad] (continuous; default {default_of(analyse, 'min_spacing'):g})")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", metavar="DIR", default=None,
                    help="write the catalogue / full-scale figures to DIR (no id needed)")

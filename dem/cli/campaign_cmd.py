@@ -5,7 +5,7 @@ import argparse
 import time
 from pathlib import Path
 
-from dem.cli.common import add_engine_argument, writable_dir
+from dem.cli.common import add_engine_argument, default_of, writable_dir
 
 
 def _campaign(args: argparse.Namespace) -> int:
@@ -56,9 +56,11 @@ def _duration(seconds: float) -> str:
 
 
 def register(sub) -> None:
+    from dem.campaign.context import CampaignContext
+
     p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
     p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(CampaignContext, "config"))
     add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")

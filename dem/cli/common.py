@@ -2,12 +2,36 @@
 from __future__ import annotations
 
 import argparse
+import dataclasses
+import inspect
 import json
 import math
 from typing import Any
 
+from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS
+from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
 from specimens.io import json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+
+
+def default_of(obj: Any, name: str) -> Any:
+    """The library's default of ``name``: a field of dataclass ``obj`` or a parameter of function ``obj``.
+
+    The sub-commands take their defaults (and the values their help texts show) from here, so a
+    default is declared once, in the library. Raises ``LookupError`` if ``obj`` has no such default."""
+    if dataclasses.is_dataclass(obj):
+        for f in dataclasses.fields(obj):
+            if f.name == name:
+                if f.default is not dataclasses.MISSING:
+                    return f.default
+                if f.default_factory is not dataclasses.MISSING:
+                    return f.default_factory()
+                break
+        raise LookupError(f"{getattr(obj, '__name__', obj)} has no default for {name!r}")
+    par = inspect.signature(obj).parameters.get(name)
+    if par is None or par.default is inspect.Parameter.empty:
+        raise LookupError(f"{getattr(obj, '__name__', obj)}() has no default for {name!r}")
+    return par.default
 
 
 def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) -> None:
@@ -16,9 +40,10 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
     g = p.add_argument_group("arch by parameters (instead of an id; SI units, m)")
     for name in ("Ri", "Re", "e", "Sh", "Sd", "Rc"):
         g.add_argument(f"--{name}", type=float, default=None)
-    g.add_argument("--width", type=float, default=None, help="out-of-plane width [m] (default 0.1)")
-    g.add_argument("--voussoirs", type=int, default=None, help="voussoirs per side (default 8)")
-    g.add_argument("--density", type=float, default=None, help="density [kg/m^3] (default 500)")
+    g.add_argument("--width", type=float, default=None,
+                   help=f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})")
+    g.add_argument("--voussoirs", type=int, default=None, help=f"voussoirs per side (default {DEFAULT_VOUSSOIRS})")
+    g.add_argument("--density", type=float, default=None, help=f"density [kg/m^3] (default {DEFAULT_DENSITY:g})")
 
 
 def arch_from_args(args: argparse.Namespace):
@@ -26,7 +51,7 @@ def arch_from_args(args: argparse.Namespace):
     from specimens.catalogue import get_specimen
     from specimens.geometry import PointedArch
 
-    width = args.width if args.width is not None else 0.1
+    width = args.width if args.width is not None else SPECIMEN_WIDTH
     by_radii = [args.Ri, args.Re, args.e]
     by_ratio = [args.Sh, args.Sd, args.Rc]
     if args.id is not None:
@@ -70,8 +95,11 @@ def print_json(obj: Any) -> None:
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:
     """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
-    p.add_argument("--engine", choices=("pybullet", "mujoco"), default="pybullet",
-                   help="physics engine (default pybullet; see README 'Choosing an engine')")
+    from dem.core.settings import Settings
+
+    engine = default_of(Settings, "engine")
+    p.add_argument("--engine", choices=("pybullet", "mujoco"), default=engine,
+                   help=f"physics engine (default {engine}; see README 'Choosing an engine')")
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import print_json, writable_file
+from dem.cli.common import default_of, print_json, writable_file
 from specimens.errors import ArchdemInputError
 
 
@@ -47,13 +47,19 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
+    from dem.core.settings import Settings
+    from dem.experiments.compare_engines import FRICTIONS, compare
+
+    engines = ",".join(default_of(compare, "engines"))
     p = sub.add_parser("compare-engines", help="tilt lambda from both engines vs limit analysis, per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--engines", default="pybullet,mujoco", help="two engines (default pybullet,mujoco)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(compare, "config"))
+    p.add_argument("--engines", default=engines, help=f"two engines (default {engines})")
     p.add_argument("--friction", choices=("both", "none", "reference"), default="both",
-                   help="no sliding, reference friction 0.577/1.0, or both (default)")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] for both engines (default 5e-4)")
+                   help="no sliding, reference friction "
+                        f"{'/'.join(f'{m:g}' for m in FRICTIONS['reference'])}, or both (default)")
+    p.add_argument("--dt", type=float, default=None,
+                   help=f"time step [s] for both engines (default {default_of(Settings, 'dt'):g})")
     p.add_argument("--workers", type=int, default=1, help="processes (default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import arch_from_args, discretisation_kwargs, parse_grid, print_json, writable_file
+from dem.cli.common import arch_from_args, default_of, discretisation_kwargs, parse_grid, print_json, writable_file
 from dem.experiments.domain import analytic_domains, dem_failure_domain
 from specimens.errors import ArchdemInputError
 
@@ -17,19 +17,25 @@ def dem_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("--engine dem runs one-cycle sines only (--input sine0)")
     if getattr(args, "durations", None) is not None:
         raise ArchdemInputError("--engine dem takes --freq, not --durations")
-    freqs = parse_grid(args.freq or "2,4,6,8,10")
+    from analytic.domain import failure_domain
+    from dem.campaign.step_shake import SHAKE_FREQS
+    from specimens.blocks import DEFAULT_DENSITY
+
+    freqs = parse_grid(args.freq) if args.freq else list(SHAKE_FREQS)
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, arch = arch_from_args(args)
-    a_max = getattr(args, "amax", 6.0)
-    a_max = 6.0 if a_max is None or a_max == 10.0 else float(a_max)  # 10 (the analytic default) is too costly here
-    res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or "glued",
+    dem_a_max = default_of(dem_failure_domain, "a_max_ratio")
+    a_max = getattr(args, "amax", dem_a_max)
+    # the analytic default (failure_domain's a_max_ratio) is too costly here: the DEM's own default instead
+    a_max = dem_a_max if a_max is None or a_max == default_of(failure_domain, "a_max_ratio") else float(a_max)
+    res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
                              workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args))
     if args.plot:
         from dem.plotting.shake import plot_domain_over_analytic
 
-        density = getattr(args, "density", None) or 500.0
+        density = getattr(args, "density", None) or DEFAULT_DENSITY
         plot_domain_over_analytic(res, analytic_domains(arch, freqs, density), args.plot,
                                   title=f"{label}: DEM vs rocking linkages, one-cycle sine")
         res["plot"] = str(args.plot)

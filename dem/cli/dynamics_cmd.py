@@ -5,8 +5,14 @@ import argparse
 import math
 
 
-from dem.cli.common import add_arch_arguments, arch_from_args, parse_grid, print_json, writable_file
+from dem.cli.common import add_arch_arguments, arch_from_args, default_of, parse_grid, print_json, writable_file
+from specimens.blocks import DEFAULT_DENSITY
+from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
+
+# Default grids of ``archdem domain`` (the analytic failure_domain takes its grid from the caller)
+SINE_FREQS = "1:20:0.5"  # Hz
+PULSE_DURATIONS = "0.05:1:0.05"  # s
 
 
 def _restitution(text: str) -> float | None:
@@ -23,7 +29,7 @@ def _restitution(text: str) -> float | None:
 
 def build_mechanism(args: argparse.Namespace):
     """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
-    density = args.density if args.density is not None else 500.0
+    density = args.density if args.density is not None else DEFAULT_DENSITY
     if not (density > 0 and math.isfinite(density)):
         raise ArchdemInputError(f"--density must be positive, got {density}")
     if args.block is not None:
@@ -34,7 +40,7 @@ def build_mechanism(args: argparse.Namespace):
         if args.model not in (None, "block"):
             raise ArchdemInputError("--block goes with --model block")
         b, h = args.block
-        width = args.width if args.width is not None else 0.1
+        width = args.width if args.width is not None else SPECIMEN_WIDTH
         return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
     label, arch = arch_from_args(args)
     model = args.model or "four-bar"
@@ -87,7 +93,7 @@ def _run_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("pulses A/B take --durations, not --freq")
     if not pulses and args.durations is not None:
         raise ArchdemInputError("sine inputs take --freq, not --durations")
-    xs = parse_grid(args.durations or "0.05:1:0.05", "--durations") if pulses else parse_grid(args.freq or "1:20:0.5")
+    xs = parse_grid(args.durations or PULSE_DURATIONS, "--durations") if pulses else parse_grid(args.freq or SINE_FREQS)
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, mech = build_mechanism(args)
@@ -161,20 +167,33 @@ def _run_rock(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
+    from analytic.domain import failure_domain
+    from dem.campaign.step_shake import SHAKE_FREQS
+    from dem.experiments.domain import dem_failure_domain
+    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
     p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
                        description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
                                    "duration (pulses), all collapse/survival bands.")
     _add_common(p)
-    p.add_argument("--freq", default=None, help="frequencies [Hz]: '0.5,1,2' or 'start:stop:step' (default 1:20:0.5)")
-    p.add_argument("--durations", default=None, help="pulse durations t_i [s] (default 0.05:1:0.05)")
-    p.add_argument("--amax", type=float, default=10.0, help="top of the amplitude scan / (lambda g) (default 10)")
-    p.add_argument("--scan", type=int, default=24, help="amplitudes in the scan (default 24)")
-    p.add_argument("--tol", type=float, default=1e-3, help="relative bisection tolerance (default 1e-3)")
+    p.add_argument("--freq", default=None, help="frequencies [Hz]: '0.5,1,2' or 'start:stop:step' (default "
+                   f"{SINE_FREQS}; --engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})")
+    p.add_argument("--durations", default=None, help=f"pulse durations t_i [s] (default {PULSE_DURATIONS})")
+    p.add_argument("--amax", type=float, default=default_of(failure_domain, "a_max_ratio"),
+                   help=f"top of the amplitude scan / (lambda g) (default {default_of(failure_domain, 'a_max_ratio'):g}; "
+                        f"--engine dem {default_of(dem_failure_domain, 'a_max_ratio'):g})")
+    p.add_argument("--scan", type=int, default=default_of(failure_domain, "n_scan"),
+                   help=f"amplitudes in the scan (default {default_of(failure_domain, 'n_scan')})")
+    p.add_argument("--tol", type=float, default=default_of(failure_domain, "tol"),
+                   help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
     p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
     p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
-    p.add_argument("--config", choices=("glued", "free"), default="glued", help="DEM: discrete configuration")
-    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None, help="DEM: block-block friction (default 0.577)")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=None, help="DEM: block-base friction (default 1.0)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
+                   help="DEM: discrete configuration")
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None,
+                   help=f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=None,
+                   help=f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})")
     p.set_defaults(func=_run_domain)
 
     q = sub.add_parser("rock", help="one time history of a rocking linkage",

@@ -5,7 +5,7 @@ import argparse
 import math
 import sys
 
-from dem.cli.common import add_engine_argument, print_json, writable_dir
+from dem.cli.common import add_engine_argument, default_of, print_json, writable_dir
 from specimens.errors import ArchdemInputError
 
 
@@ -29,6 +29,7 @@ def _specimens(args: argparse.Namespace) -> list:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from dem.core.settings import Settings
     from specimens.io import unique_run_path
     from dem.experiments.friction_map import catalogue_map, parse_mu_grid
     from dem.studies.sweep import StudyInterrupted
@@ -57,7 +58,7 @@ def _run(args: argparse.Namespace) -> int:
         res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
-                            settings={"engine": args.engine} if args.engine != "pybullet" else None)
+                            settings={"engine": args.engine} if args.engine != default_of(Settings, "engine") else None)
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2
@@ -86,21 +87,31 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
+    from dem.experiments.friction_map import catalogue_map, parse_mu_grid
+    from dem.studies.cases import MAP_TILT_TOL
+    from specimens.catalogue import FULL_SCALE_SPANS
+
+    mus = default_of(catalogue_map, "mus")
     p = sub.add_parser("map", help="friction-threshold map: DEM tilt lambda(mu), mode(mu) and mu* per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--mu", default="0.3:1.5:0.1", help="joint friction grid START:STOP:STEP or a,b,c "
-                   "(default 0.3:1.5:0.1, 13 values)")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
-    p.add_argument("--refine", type=int, default=3, help="bisection steps on mu* after the grid (default 3)")
-    p.add_argument("--tol", type=float, default=0.02, help="relative lambda tolerance of each tilt (default 0.02)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(catalogue_map, "config"))
+    p.add_argument("--mu", default=mus, help="joint friction grid START:STOP:STEP or a,b,c "
+                   f"(default {mus}, {len(parse_mu_grid(mus))} values)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(catalogue_map, "mu_base"),
+                   help=f"block-base friction (default {default_of(catalogue_map, 'mu_base'):g})")
+    p.add_argument("--refine", type=int, default=default_of(catalogue_map, "refine"),
+                   help=f"bisection steps on mu* after the grid (default {default_of(catalogue_map, 'refine')})")
+    p.add_argument("--tol", type=float, default=MAP_TILT_TOL,
+                   help=f"relative lambda tolerance of each tilt (default {MAP_TILT_TOL:g})")
     p.add_argument("--workers", type=int, default=None, help="local worker processes (default: all cores)")
     add_engine_argument(p)
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
     p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")
     p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/map/map-CONFIG[-N].h5)")
     p.add_argument("--full-scale", dest="full_scale", action="store_true",
-                   help="use the full-scale parametric set (spans 5/10/20 m, 8 voussoirs per side)")
+                   help="use the full-scale parametric set (spans "
+                        f"{'/'.join(f'{s:g}' for s in FULL_SCALE_SPANS)} m, "
+                        f"{default_of(catalogue_map, 'n_voussoirs')} voussoirs per side)")
     p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
     p.add_argument("--json", action="store_true", help="print JSON per specimen")
     p.set_defaults(func=_run)

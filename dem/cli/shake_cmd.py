@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
 from specimens.errors import ArchdemInputError
 
 
@@ -108,20 +108,31 @@ def _run_animate(args: argparse.Namespace) -> int:
 
 
 def _common(p: argparse.ArgumentParser) -> None:
+    from dem.core.settings import Settings
+    from dem.experiments.shake import ShakeProtocol
+    from specimens.blocks import discretise
+
     add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=default_of(Settings, "mu_joint"),
+                   help=f"block-block friction (default {default_of(Settings, 'mu_joint'):g})")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(Settings, "mu_base"),
+                   help=f"block-base friction (default {default_of(Settings, 'mu_base'):g})")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
+    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
-    p.add_argument("--tail", type=float, default=1.0, help="zero-acceleration tail after the motion [s] (default 1)")
-    p.add_argument("--load", choices=("inertial", "driven-base"), default="inertial",
-                   help="ground motion as a uniform inertial field on a fixed base (default) or as a moving base")
+    p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),
+                   help=f"zero-acceleration tail after the motion [s] (default {default_of(ShakeProtocol, 'tail'):g})")
+    p.add_argument("--load", choices=("inertial", "driven-base"), default=default_of(ShakeProtocol, "load"),
+                   help="ground motion as a uniform inertial field on a fixed base (inertial) or as a moving base "
+                        f"(driven-base); default {default_of(ShakeProtocol, 'load')}")
     p.add_argument("--json", action="store_true", help="print one JSON object")
 
 
 def register(sub) -> None:
+    from dem.experiments.thresholds import threshold
+    from dem.plotting.animate import animate
+
     p = sub.add_parser("shake", help="virtual shake table: one sine pulse or recorded accelerogram",
                        description="One shake-table run (uniform inertial field on a fixed base, or --load driven-base).")
     _common(p)
@@ -146,14 +157,18 @@ def register(sub) -> None:
     q.add_argument("--sine", type=float, required=True, metavar="FREQ", help="sine frequency [Hz]")
     q.add_argument("--a-min", dest="a_min", type=float, default=None, help="scan start [g] (default: static lambda)")
     q.add_argument("--a-max", dest="a_max", type=float, default=None, help="scan end [g] (default 5 x start)")
-    q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=1.15, help="scan step ratio (default 1.15)")
-    q.add_argument("--tol", type=float, default=0.01, help="relative bisection tolerance (default 0.01)")
+    q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=default_of(threshold, "scan_ratio"),
+                   help=f"scan step ratio (default {default_of(threshold, 'scan_ratio'):g})")
+    q.add_argument("--tol", type=float, default=default_of(threshold, "tol"),
+                   help=f"relative bisection tolerance (default {default_of(threshold, 'tol'):g})")
     q.add_argument("--workers", type=int, default=None, help="processes for the scan (default: all cores)")
     q.set_defaults(func=_run_threshold)
 
     r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")
     r.add_argument("run", help="run file (.h5) written by `archdem tilt` or `archdem shake`")
     r.add_argument("--out", required=True, help="FILE.gif or FILE.mp4 (never overwritten)")
-    r.add_argument("--fps", type=int, default=25)
-    r.add_argument("--frames", type=int, default=200, help="most frames (default 200)")
+    r.add_argument("--fps", type=int, default=default_of(animate, "fps"),
+                   help=f"frames per second (default {default_of(animate, 'fps')})")
+    r.add_argument("--frames", type=int, default=default_of(animate, "max_frames"),
+                   help=f"most frames (default {default_of(animate, 'max_frames')})")
     r.set_defaults(func=_run_animate)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
 from specimens.catalogue import JSON_KEYS, catalogue_rows
 from specimens.errors import ArchdemInputError
 
@@ -28,7 +28,7 @@ def _assembly(args: argparse.Namespace):
 
     label, arch = arch_from_args(args)
     kw = discretisation_kwargs(args)
-    asm = discretise(arch, config=args.config, shape=getattr(args, "shape", "linearised"), **kw)
+    asm = discretise(arch, config=args.config, shape=getattr(args, "shape", default_of(discretise, "shape")), **kw)
     return label, asm
 
 
@@ -56,21 +56,23 @@ def _draw(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
+    from specimens.blocks import discretise
+
     p = sub.add_parser("specimens", help="table of the specimen catalogue")
     p.add_argument("--json", action="store_true", help="print a JSON list")
     p.set_defaults(func=_specimens)
 
     p = sub.add_parser("mesh", help="export voussoir meshes (convex pieces) of an arch")
     add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--shape", choices=("linearised", "curved"), default="linearised")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
     p.add_argument("--format", choices=("stl", "obj", "glb"), default="stl")
     p.add_argument("--out", required=True, help="output directory")
     p.set_defaults(func=_mesh)
 
     p = sub.add_parser("draw", help="engineering drawing of an arch")
     add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--shape", choices=("linearised", "curved"), default="linearised")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
     p.add_argument("--out", required=True, help="output image (.png/.pdf/.svg)")
     p.set_defaults(func=_draw)

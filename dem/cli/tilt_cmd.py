@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
 from specimens.errors import ArchdemInputError
 
 
@@ -51,18 +51,27 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
+    from dem.core.settings import Settings
+    from dem.experiments.tilt import TiltProtocol
+    from specimens.blocks import discretise
+
     p = sub.add_parser("tilt", help="virtual tilt test (collapse multiplier lambda = tan theta and failure mode)")
     add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default="glued")
-    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=0.577, help="block-block friction (default 0.577)")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=1.0, help="block-base friction (default 1.0)")
-    p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default="hold")
-    p.add_argument("--start", choices=("lp", "scan"), default="lp",
-                   help="hold: first bracket around the static LP of the blocks (default) or from a fast ramp")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=default_of(Settings, "mu_joint"),
+                   help=f"block-block friction (default {default_of(Settings, 'mu_joint'):g})")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(Settings, "mu_base"),
+                   help=f"block-base friction (default {default_of(Settings, 'mu_base'):g})")
+    p.add_argument("--protocol", choices=("hold", "staircase", "ramp"), default=default_of(TiltProtocol, "kind"),
+                   help=f"tilt protocol (default {default_of(TiltProtocol, 'kind')})")
+    p.add_argument("--start", choices=("auto", "lp", "scan"), default=default_of(TiltProtocol, "start"),
+                   help="hold: first bracket around the static LP of the blocks (lp) or from a fast ramp (scan); "
+                        f"default {default_of(TiltProtocol, 'start')}, which is lp here (the blocks are known)")
     p.add_argument("--full-hold", dest="full_hold", action="store_true",
-                   help="hold: hold every level the full 1 s (by default a level at rest 0.5 s into the hold ends there)")
+                   help=f"hold: hold every level the full {default_of(TiltProtocol, 'hold_time'):g} s (by default a "
+                        f"level at rest {default_of(TiltProtocol, 'rest_after'):g} s into the hold ends there)")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help="time step [s] (default 5e-4)")
+    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
     p.add_argument("--out", default="runs/tilt", help="directory for the result file (default runs/tilt)")
     p.add_argument("--json", action="store_true", help="print one JSON object")

@@ -63,7 +63,7 @@ def _outlines(model, pos: np.ndarray, R: np.ndarray) -> list[np.ndarray]:
     return out
 
 
-def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 300, overwrite: bool = False) -> Path:
+def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 200, overwrite: bool = False) -> Path:
     """Write the animation of run file ``path`` to ``out`` (.gif or .mp4); returns ``out``."""
 
     from matplotlib.figure import Figure
