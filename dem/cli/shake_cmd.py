@@ -130,7 +130,7 @@ def _common(p: argparse.ArgumentParser) -> None:
 
 
 def register(sub) -> None:
-    from dem.experiments.thresholds import threshold
+    from dem.experiments.thresholds import SCAN_TOP, threshold
     from dem.plotting.animate import animate
 
     p = sub.add_parser("shake", help="virtual shake table: one sine pulse or recorded accelerogram",
@@ -156,7 +156,7 @@ def register(sub) -> None:
     _common(q)
     q.add_argument("--sine", type=float, required=True, metavar="FREQ", help="sine frequency [Hz]")
     q.add_argument("--a-min", dest="a_min", type=float, default=None, help="scan start [g] (default: static lambda)")
-    q.add_argument("--a-max", dest="a_max", type=float, default=None, help="scan end [g] (default 5 x start)")
+    q.add_argument("--a-max", dest="a_max", type=float, default=None, help=f"scan end [g] (default {SCAN_TOP:g} x start)")
     q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=default_of(threshold, "scan_ratio"),
                    help=f"scan step ratio (default {default_of(threshold, 'scan_ratio'):g})")
     q.add_argument("--tol", type=float, default=default_of(threshold, "tol"),

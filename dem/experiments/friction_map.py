@@ -52,6 +52,8 @@ from typing import Sequence
 import numpy as np
 
 from dem.studies.cases import DEM_CASE, MAP_PROTOCOL, MAP_TILT_TOL, RC_REF, _scaled_protocol, make_case
+from specimens.blocks import DEFAULT_VOUSSOIRS
+from specimens.constants import REFERENCE_MU_BASE
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
@@ -349,10 +351,10 @@ def _point(rec, kind: str) -> MapPoint:
 
 # ----------------------------------------------------------------------------- the map
 def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str = "0.3:1.5:0.1",
-                  mu_base: float = 1.0, out_path: str | os.PathLike = "runs/map/map.h5", workers: int | None = None,
+                  mu_base: float = REFERENCE_MU_BASE, out_path: str | os.PathLike = "runs/map/map.h5", workers: int | None = None,
                   scheduler: str | None = None, resume: bool = False, progress: bool = True, refine: int = 3,
                   protocol: dict | None = None, settings: dict | None = None, func: str = DEM_CASE,
-                  n_voussoirs: int = 8, time_scale: float | str = "auto", extra: dict | None = None) -> MapResult:
+                  n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each

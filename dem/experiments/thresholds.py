@@ -49,6 +49,9 @@ from dem.experiments.shake import ShakeProtocol, collapses
 from specimens.errors import ArchdemInputError
 
 
+SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
+
+
 def sine_motion(amplitude: float, freq: float) -> GroundMotion:
     """Plain one-cycle sine of ``amplitude`` [m/s^2] and ``freq`` [Hz]."""
     return SinePulse(float(amplitude), float(freq))
@@ -248,7 +251,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
     """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target`` (a specimen id,
     Specimen, PointedArch, Assembly or Model, see :func:`dem.core.model.as_model`); see the module
     docstring. The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`;
-    nothing moves below it) to ``a_max_g`` (default 5 x ``a_min_g``); ``workers``: processes for the
+    nothing moves below it) to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``); ``workers``: processes for the
     scan (default all cores, 1 = serial).
     """
     model = as_model(target, config=config)
@@ -261,7 +264,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()
     a_min_g = static_onset(model, settings) if a_min_g is None else a_min_g
-    a_max_g = 5.0 * a_min_g if a_max_g is None else a_max_g
+    a_max_g = SCAN_TOP * a_min_g if a_max_g is None else a_max_g
     grid = scan_grid(a_min_g, a_max_g, scan_ratio)
     job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
     scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims)
