@@ -48,6 +48,19 @@ def test_shake_json_and_files(tmp_path, capsys):
     assert main(["animate", d["result_file"], "--out", str(tmp_path / "a.gif"), "--frames", "5"]) == 0
 
 
+def test_python_call_gives_the_cli_answer(tmp_path, capsys):
+    # dem.shake with ground_motion(sine=F, amplitude=A) takes the CLI's units (Hz, g) and answers the same
+    from dem import ShakeProtocol, ground_motion, shake
+    from specimens import PointedArch, discretise
+
+    assert main(["shake", *SMALL, "--sine", "4", "--amplitude", "0.3", "--json", "--out", str(tmp_path)]) == 0
+    cli = json.loads(capsys.readouterr().out)
+    arch = PointedArch.from_ratios(*(float(SMALL[k + 1]) for k in (0, 2, 4)))
+    py = shake(discretise(arch, n_voussoirs=2), ground_motion(sine=4, amplitude=0.3), protocol=ShakeProtocol()).summary()
+    for k in ("collapsed", "t_collapse", "mode", "peak_crown_mm", "residual_crown_mm", "pga_g"):
+        assert py[k] == cli[k], k
+
+
 def test_shake_record(tmp_path, capsys):
     rec = DATA / "RSN77_SFERN_PUL164.AT2"
     rc = main(["shake", *SMALL, "--record", str(rec), "--pga", "0.2", "--duration", "0.5", "--json",

@@ -42,3 +42,15 @@ def test_tilt_full_hold_is_stored(tmp_path, capsys):
     rest = load_result(json.loads(capsys.readouterr().out)["result_file"])
     assert full.protocol.rest_after is None and rest.protocol.rest_after == 0.5
     assert np.isnan(full.stable.t_rest)
+
+
+def test_python_call_gives_the_cli_answer(tmp_path, capsys):
+    # the CLI and dem.tilt on the same arch: the same search (LP-started), levels and lambda
+    from dem import tilt
+    from specimens import PointedArch, discretise
+
+    assert main(["tilt", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--json",
+                 "--out", str(tmp_path)]) == 0
+    cli = json.loads(capsys.readouterr().out)
+    py = tilt(discretise(PointedArch.from_ratios(0.6, 0.25, 0.2), n_voussoirs=2))
+    assert py.lam == cli["lambda"] and py.n_sims == cli["n_sims"] and list(py.bracket) == cli["bracket"]
