@@ -1,14 +1,6 @@
-"""Simulator steps of the campaign: tilt tests, friction map, shake thresholds, a recorded motion.
-
-Each step writes its tables / figures into the step folder and returns the outputs the report
-reads (see :mod:`dem.campaign.report`); findings are sentences computed from the results. The
-simulations run through the sweep engine (:mod:`dem.studies.sweep`) into study files under
-``OUT/studies/`` that live outside the step folders, so an interrupted campaign resumes
-them without recomputing finished cases.
-"""
+"""The campaign's time estimate: what each simulator step will run, its unit costs, and this
+machine's speed reading (:func:`machine_speed`) that scales them (docs/timings.md)."""
 from __future__ import annotations
-
-
 
 from dem.campaign.context import CampaignContext
 from dem.campaign.step_map import _map_plan
@@ -17,30 +9,8 @@ from dem.campaign.step_shake import _shake_plan
 from dem.campaign.step_tilt import _tilt_frictions
 
 
-# Core-seconds of one unit of work of each simulator step, PyBullet, 15 bodies, defaults dt 0.5 ms /
-# 100 iterations, tilt levels ramped 0.5 s and held 1 s (wall of the step x 2 cores / units), on the
-# scale of REFERENCE_SPEED: each measurement x 1.9 / the machine_speed of its machine.
-# Quick values: a quick campaign run from a fresh clone (204 s at machine_speed 1.65: tilt 64.8 s for
-# 11 tests, map 52.5 s for 10 cases, shake 31.8 s for 2 thresholds, record 36.2 s for 1). Full
-# values: the full campaign run end to end from a fresh clone (1914 s at 1.65: tilt 164.6 s for 22
-# tests, map 868.6 s for 176 cases, shake 588.8 s for 30 thresholds, record 273.3 s for 3; the
-# former values estimated it at 34 min). The machine_speed reading tracks stepping only: the quick
-# shake and record steps (untouched by the code changes in between) cost 1.3 and 1.6 x less on the
-# 1.65 machine than on a 1.76 one, both brought to this scale.
-# Since the hold's rest rule (TiltProtocol.rest_after): the quick tilt and map values from a quick
-# run at machine_speed 1.40 (tilt 45.7 s for 11 tests, map 36.8 s for 10 cases; 13.6 and 12.1
-# before), the full ones scaled by what the rule saved on the same machine: x 0.80 the tilt (the
-# 44 tilt tests of benchmarks/validate_dem.py, 206 s against 258 s) and x 0.79 the map
-# (benchmarks/bench_map.py --specimens all, 524 s against 661 s).
-# The tilt values since the tilt test simulates the ends of its first bracket only when the bisection
-# ends on one (TiltProtocol.probe_ends) and the quick step runs the tilt test's protocol too: the tilt
-# step alone (--steps tilt), quick 32.5 s for 11 tests at machine_speed 1.24, full 53.2 s for 22
-# tests at 1.27 (the quick step's 11 tests on 2 workers leave one idle for the last one). The map
-# values since the map does the same: quick, the map step alone, 25.2 s and 22.9 s for 10 cases at
-# about 1.33; full, benchmarks/bench_map.py --specimens all, 345 s for 167 cases at about 1.28.
-# The shake values since a shake run ends once at rest after the motion (ShakeProtocol.rest_after):
-# the shake step alone, quick 20.4 s for 2 thresholds at machine_speed 1.28, full 339.3 s for 30 at
-# 1.26 (458 s without the rule, same machine).
+# Core-seconds of one unit of work of each simulator step (PyBullet, 15 bodies, the defaults) on a
+# machine whose machine_speed reads REFERENCE_SPEED, from timed campaign runs (docs/timings.md#4-unit-costs)
 UNIT_CORE_S = {
     ("tilt", True): 9.1,  # one tilt test, bisected to 0.5 % from the LP bracket (3 simulations)
     ("tilt", False): 7.2,
@@ -52,10 +22,8 @@ UNIT_CORE_S = {
     ("record", False): 209.8,  # ... 7 s window, tol 1 %
 }
 ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
-# Wall seconds per simulated second that :func:`machine_speed` reads on the machine of UNIT_CORE_S
-# (5 calls on an idle 2-core machine: PyBullet 1.80-2.09, median 1.93; MuJoCo 1.15-1.31, median 1.24;
-# another machine read 1.64-1.65, e.g. at the start of the quick run above). The estimate scales
-# the unit costs by this machine's own reading over these, so it holds on a faster machine too.
+# Wall seconds per simulated second that machine_speed reads on the machine of UNIT_CORE_S; the estimate
+# scales the unit costs by this machine's reading over these (docs/timings.md#3-the-campaigns-time-estimate)
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25}
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
 

@@ -1,29 +1,9 @@
 """All physical, contact, solver and detection settings of a simulation — one frozen object.
 
-Every field has a default that passes the validation of spec §3.4; the comment next to each
-gives the measurement behind it (PyBullet 3.2.7, catalogue specimens, see
-``benchmarks/validate_dem.py`` and spec 04 §4.1). The object is stored in every result file.
-
-Measured with these defaults (benchmarks/validate_dem.py, 11 specimens x glued/free, dt 0.5 ms,
-100 solver iterations, levels ramped 0.5 s and held 1 s or ended at rest from 0.5 s into the hold
-(TiltProtocol.rest_after), bisection from (0.972, 1.01) x the LP (TiltProtocol.guess_bracket)
-whose ends are simulated only if the bisection ends on one (TiltProtocol.probe_ends),
-machine-independent engine inputs): rest drift in 5 s 0.017-0.097 mm (largest point displacement
-of any body); single block lambda within 0.4 % of mu and of b/h; no-sliding tilt lambda from 2.8 %
-below to 0.05 % above the discrete LP, mean |error| 0.63 %, 22 of 22 within 3 %, 20 of 22 within
-2 % (free Sh06-Sd010 -2.8 %, glued -2.3 %); hinge layout equal to the LP's or within 0.5 % of its
-lambda on 19 of 22; reference friction at or below the no-sliding lambda + 1 % on 21 of 22 (free
-Sh06-Sd010, 1.5 % above it: see GUESS_BRACKET in dem.experiments.tilt). With both ends simulated first
-the same run read free Sh1-Sd025 at -3.1 % (its 0.972 x LP level collapsed at rest: see
-PROBE_ENDS), everything else identical. The bisection from (0.95, 1.01) x the LP gave, on the same
-machine: 5.0 % below to 0.1 % below, mean 0.86 %, 21 of 22 within 3 % (free Sh1-Sd025 -5.0 %), 20
-within 2 %, hinge layouts 20, reference 22 of 22. Near the threshold PyBullet's outcome is not
-monotonic in lambda, so which case misses changes with any last-bit change of the inputs or of the
-protocol: seven runs of the same 22 cases (LP or scan start, ramp 0.5 or 1 s, before and after
-dem.core.engines.inputs, i.e. with different last bits, either first bracket, either order of its ends)
-gave 19-22 of 22 within 3 % and mean errors 0.63-1.63 %, and one case moved from +0.14 % to -5.5 %. Since
-dem.core.engines.inputs the same run gives the same numbers on an AVX-512 and an AVX2-only CPU. The previous defaults (dt 1 ms, 200 iterations, about the same cost per
-simulated second) were 0.3-5.1 % low, 8 of 22 beyond 3 %.
+Every field has a default that passes the validation against exact limit analysis
+(``benchmarks/validate_dem.py``; its figures with these defaults are in docs/validation.md, the
+measurements behind the engine settings in docs/decisions/006-solver-settings.md). The object is
+stored in every result file.
 """
 from __future__ import annotations
 
@@ -39,36 +19,31 @@ from specimens.errors import ArchdemInputError
 class Settings:
     """Simulation settings (SI units)."""
 
-    # --- physics -------------------------------------------------------------------------
+    # physics
     mu_joint: float = REFERENCE_MU_JOINT  # block-block Coulomb friction (tan 30 deg)
     mu_base: float = REFERENCE_MU_BASE  # block-base Coulomb friction (tan 45 deg)
     restitution: float = 0.0  # normal restitution; 0 = plastic impacts (masonry)
     g: float = G  # gravity magnitude [m/s^2]; the tilt rotates it at constant magnitude
     planar: bool = False  # True: out-of-plane velocities zeroed after every step (2D comparison)
-    # --- engine --------------------------------------------------------------------------
+
+    # engine and solver: 0.5 ms / 100 iterations is the cheapest pair that keeps the no-sliding lambda
+    # within 3 % of the LP and the hinge layouts (docs/decisions/006-solver-settings.md)
     engine: str = "pybullet"
-    dt: float = 5e-4  # [s]; the no-sliding lambda bias shrinks with dt (spec 04 §4.1). Full validation:
-    #   1 ms/200 iterations 0.3-5.1 % low (8 of 22 beyond 3 %, mean 2.5 %); 0.5 ms/100 see above (mean
-    #   1.2 %); 0.5 ms/50 (1.5x cheaper) mean 1.4 %, 2 beyond 3 % and 6 of 22 hinge layouts wrong (joints
-    #   read as sliding at mu = 10); 0.5 ms/30 -3.2 and -3.6 % on the two worst. All drift < 0.11 mm/5 s.
-    solver_iterations: int = 100  # per step; 0.5 ms/100 costs about what 1 ms/200 did per simulated second.
-    #   0.5 ms/200 with the current protocol (validate_dem.py --iterations 200; 187 s against 117 s):
-    #   mean error 0.70 % against 0.63 %, 21 of 22 within 3 % (free Sh1-Sd025 -3.7 %), hinge layouts 18
-    #   against 19, reference 22 of 22 against 21. The misses move: free Sh06-Sd010's reference rule and
-    #   free Sh06-Sd015's hinges pass, glued Sh06-Sd010's and free Sh06-Sd020's hinges miss
+    dt: float = 5e-4  # [s]; the no-sliding lambda bias shrinks with dt
+    solver_iterations: int = 100  # per step; 0.5 ms / 100 costs about what 1 ms / 200 did per simulated second
+
+    # contacts (PyBullet; its defaults creep or sink at rest)
     contact_slop: float = 0.0  # PyBullet default 1e-5 m sinks every joint 10 um (~0.1 mm crown drop)
     warm_starting: float = 1.0  # PyBullet default 0.1 creeps; 1.0 lets contact impulses persist at rest
     friction_anchor: bool = True  # anchors static friction: no creep of blocks at rest
     sat_features: bool = True  # polyhedral contact (4 points per face) instead of a ~1 mm hull margin
+
     inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0
-    inflate_normal: bool = False  # False: vertices pushed 1 um radially from the piece centroid
-    #   (specimens.mesh.prism); True: faces offset along their normals. Full validation of both:
-    #   same lambda bias within run-to-run scatter (+-1-2 %), but the normal offset let 5 free
-    #   specimens drift 0.10-1.0 mm in 5 s at rest against <= 0.102 mm for the radial one.
+    inflate_normal: bool = False  # False: vertices pushed radially from the piece centroid; True: along face normals (drifts)
     contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (0.16-0.25 mm in 5 s)
-    friction_erp: float = 1.0  # friction drift correction; default left free Sh06-Sd010 creeping 0.7 mm
-    #   in 5 s at its crown joints (near the friction limit at rest), 0.8 -> 0.14 mm, 1.0 -> 0.09 mm (plateau)
-    # --- detection (spec §3.3) -----------------------------------------------------------
+    friction_erp: float = 1.0  # friction drift correction; lower values let blocks near the friction limit creep
+
+    # detection (docs/physics/dem.md#5-collapse-criterion)
     collapse_fraction: float = 0.06  # collapse: any body point moved > this x size (ring thickness)
     collapse_speed: float = 1e-3  # ... while that body still moves faster than this [m/s]
     mode_window: tuple[float, float] = (0.015, 0.06)  # mode read between these displacements / size

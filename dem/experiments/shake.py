@@ -53,27 +53,16 @@ LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module 
 class ShakeProtocol:
     """Parameters of a shake run (stored with each result)."""
 
-    tail: float = 1.0  # zero acceleration after the motion [s]. Of the 306 survived runs of the full
-    #   campaign's shake and record steps, 151 were still moving 1 s after the motion (rocking that
-    #   decays). Re-run with a 5 s tail and rest_after: no run collapsed later than 1 s after the
-    #   motion, all survived runs but one (creeping) came to rest within 3.5 s of its end (140 later
-    #   than 1 s), and every threshold, band and run count was the same.
+    tail: float = 1.0  # zero acceleration after the motion [s]; a 5 s tail changed no threshold
+    #   (docs/decisions/005-shake-end-at-rest.md)
     duration: float | None = None  # total simulated time [s]; default motion duration + tail
     collapse_fraction: float = 1.0  # collapse: a point moved > this x size while moving
     record_every: float = 0.005  # [s] history sampling (and collapse check)
     onset_mm: float = 0.1  # crown displacement at which the motion is said to start [mm]
     stop_on_collapse: bool = True
     load: str = "inertial"  # inertial (uniform inertial field, fixed base) | driven-base
-    rest_after: float | None = 0.1  # [s] after the ground motion has ended: from then on a run ends
-    #   (survived) at the first record at which the largest displacement varied by less than
-    #   rest_span x size over the last rest_window. Once the ground is still, the load is gravity
-    #   alone and a structure at rest is in equilibrium (as the tilt's TiltProtocol.rest_after).
-    #   None: the whole duration is simulated. Measured on the 547 runs of the full campaign's shake
-    #   and record steps (30 sine-pulse and 3 record thresholds, each run simulated to its end with
-    #   its history kept): no run that this rule would have ended collapsed later, for any of
-    #   rest_after 0-0.2 s, rest_window 0.05-0.2 s, rest_span 1e-4-1e-3; with these values it ends
-    #   165 of the 306 survived runs early and the simulated time falls to 86 %. A swing's apex (at
-    #   rest for an instant) is not ended: over 0.1 s its displacement varies by millimetres.
+    rest_after: float | None = 0.1  # [s] after the motion: from then on a run at rest (displacement varying
+    #   by less than rest_span x size over rest_window) ends as survived; None: the whole duration (decision 005)
     rest_window: float = 0.1  # [s]
     rest_span: float = 3e-4  # largest minus smallest displacement over rest_window / size
 

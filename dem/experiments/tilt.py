@@ -36,43 +36,12 @@ from dem.core.simulate import SimResult, onset_time, simulate
 from specimens.errors import ArchdemInputError
 
 
-# First bracket of the hold protocol around an analytic estimate, relative to it (the default of
-# TiltProtocol.guess_bracket). Where the DEM lambda lies (defaults, benchmarks/validate_dem.py, 22
-# cases x no sliding / reference friction, bracket (0.95, 1.01), 88 tilt tests of both engines):
-# every level 1.01 x LP collapsed; the lowest collapsing level was 0.976-1.0025 x LP on 86 of the 88 and
-# 0.95 (PyBullet, free Sh1-Sd025, no sliding) or 0.965 x LP (MuJoCo, free Sh02-Sd025, reference)
-# on the other two. (0.972, 1.01) is 3.8 % wide, the widest that reaches the tilt test's 0.5 % in 3
-# bisections (4 with (0.95, 1.01)) and 2 % in one. An end that turns out wrong is moved outward
-# (GUESS_STEPS) and costs one simulation or more. Measured with it, both ends simulated first
-# (validate_dem.py --no-drift, the same machine as the (0.95, 1.01) figures): PyBullet 224
-# simulations against 265, no-sliding mean error 0.69 % against 0.86 %, 21 of 22 within 3 % both,
-# 19 against 20 within 2 %, hinge layouts 19 against 20, reference <= no sliding + 1 % 21 against 22
-# (free Sh06-Sd010: 0.972 x LP collapsed 0.46 s into the hold with no sliding, and 0.9815 x LP held
-# at the reference friction, where (0.95, 1.01) had read 0.9725 and 0.976 x LP stable and 0.98
-# collapsing in both: PyBullet's band of non-monotonic outcomes, see below); MuJoCo 222 against 265,
-# mean error 0.10 % against 0.24 %, 22 of 22 within 2 % both, hinges 20 both, reference 22 of 22 both.
-# The friction map keeps (0.95, 1.01) (MAP_GUESS_BRACKET in dem.experiments.friction_map: it reads the mode of
-# the collapsing level of a 2 % bracket, and the tighter bracket read it nearer the threshold).
-# Both ends of the final bracket are simulated, but near the threshold PyBullet's outcome is not
-# monotonic in lambda (Sh06-Sd010 glued, no sliding, former dt 1 ms defaults, held 4 s: 0.932 and 0.95 x LP
-# collapsed suddenly after 2-3 s at rest with 0.3 mm of deformation, while 0.94 and 0.96 held), so
-# the path of the bisection picks a point of that band (at those defaults the no-sliding
-# validation read -6.8 % there with this start, -2.1 % with the scan; not re-run at the new ones).
+# First bracket of the hold protocol, relative to its first estimate: the widest that reaches the
+# 0.5 % tolerance in 3 bisections (docs/decisions/002-guess-bracket.md)
 GUESS_BRACKET = (0.972, 1.01)
-GUESS_STEPS = (1.05, 0.95)
-# When the ends of the first bracket are simulated (the default of TiltProtocol.probe_ends). With
-# both simulated first, 2 of the 5 simulations of most tilt tests went to levels that the final
-# bracket did not use. "last" bisects at once and simulates an end only if the bisection ends on it
-# (6 of the 88 tilt tests below: PyBullet 4, MuJoCo 2), so the final bracket has two simulated ends
-# as before. Measured (benchmarks/validate_dem.py --no-drift, the same machine, "first" figures
-# above): PyBullet 140 simulations against 224, 117 s against 198 s; 43 of the 44 lambdas
-# identical; free Sh1-Sd025 with no sliding -1.85 % against -3.10 % ("first" had simulated
-# 0.972 x LP, which collapsed at rest, spuriously, the band of non-monotonic outcomes above; "last"
-# never reached it), so 22 of 22 within 3 % (mean error 0.63 %), 20 within 2 %, hinges 19 and
-# reference 21 of 22 as before. MuJoCo 138 against 222 simulations, 76 s against 132 s, all 44 lambdas
-# identical. One tilt test (glued, reference friction), "first"/"last" interleaved in one run,
-# median of 3: PyBullet 6.9 / 4.1 s (Sh06-Sd015) and 6.9 / 4.4 s (Sh1-Sd020), MuJoCo 4.8 / 3.0 s
-# and 5.4 / 3.4 s, the same lambdas.
+GUESS_STEPS = (1.05, 0.95)  # an end of the first bracket that turns out wrong moves out by these factors
+# an end of the first bracket is simulated only if the bisection ends on it: 3 simulations per test
+# instead of 5, the same answers (docs/decisions/003-probe-ends.md)
 PROBE_ENDS = "last"
 
 
@@ -81,81 +50,28 @@ class TiltProtocol:
     """Tilt-test protocol parameters (stored with each result)."""
 
     kind: str = "hold"  # hold | staircase | ramp
-    ramp_time: float = 0.5  # hold: smooth ramp to each level [s]. Measured (benchmarks/validate_dem.py,
-    #   22 cases, LP start, held 1 s): ramp 0.5 s against 1 s, no-sliding error vs the LP mean 0.86 %
-    #   against 0.76 % (paired difference -0.10 +- 0.12 % standard error: no measurable bias from the
-    #   faster ramp), 21 of 22 within 3 % both (free Sh1-Sd025 -5.0 % against -3.9 %), 20 of 22 within
-    #   2 % both, hinge layouts 20 of 22 against 18, reference <= no sliding + 1 % 22 of 22 against 21,
-    #   collapses below the LP while held 27 against 33, wall time 338 s against 471 s (-28 %).
-    #   Ramp 0.25 s, measured and rejected (same run with the rest rule): mean error 0.84 % against
-    #   0.86 %, but 20 of 22 within 3 % (Sh06-Sd010 free -3.1 %, Sh1-Sd025 free -3.9 %), 19 within 2 %,
-    #   hinge layouts 16 of 22 against 20, reference <= no sliding + 1 % 21 of 22; 156 s against 209 s
-    hold_time: float = 1.0  # hold: longest time held at the level [s] (see rest_after). Measured (benchmarks/validate_dem.py
-    #   --start lp, 22 cases, no sliding, 2 s held, every level logged): the 30 levels at or above the
-    #   LP (the exact threshold with no sliding) collapsed within 0.43 s of the hold (0.27-0.43 s at
-    #   +0.25 %, 0.28 s at most at +1 %); the 6 that collapsed later than 1 s (1.08-1.66 s) were all
-    #   below the LP (0.969-0.999 x), spurious collapses of a structure that stands, set off by solver
-    #   chatter at rest near the threshold. Held 1 s, LP start: no-sliding error vs LP -3.88 to +0.25 %
-    #   (20 of 22 within 3 %, against 19 held 2 s) in 19 % less wall time; ramp-scan start (then the
-    #   default): -2.36 to +0.14 % and free Sh1-Sd025 -7.24 % (21 of 22, against 20), reference
-    #   friction <= no-sliding + 1 % on 22 of 22 (against 21). A level less than ~0.1 % above the
-    #   threshold may need longer than 1 s and read as stable (+0.25 % on Sh1-Sd020/25 glued, LP start).
-    #   (Ramped 1 s then; ramped 0.5 s, the 33 levels at or above the LP collapsed within 0.44 s.)
-    #   Held 0.5 s, measured and rejected: on the 22 cases as good as 1 s (no-sliding mean error 0.75 %
-    #   against 0.86 %, 21 of 22 within 3 % both, hinge layouts 19 against 20 of 22, the same modes,
-    #   every lambda equal to or one bisection step above the 1 s one) and the glued catalogue map
-    #   in 8.1 min on 2 cores against 11.0 min held 1 s (same machine, the same mu* on all 11 specimens;
-    #   benchmarks/bench_map.py --specimens all, 167 cases), but a single block sliding at
-    #   mu = 0.3 reads lambda +3.1 % (PyBullet; MuJoCo +3.0 %) against +1.1 % held 1 s and +1.6 % held
-    #   0.75 s, beyond the 2 % of the validation: near mu the block accelerates at only
-    #   ~g cos(theta) (lambda - mu), so it takes longer than the hold to reach the collapse
-    #   displacement. At the reference friction, 14 of the 62 collapses held 1 s came 0.51-1.0 s into
-    #   the hold. The hold that ends when the blocks are at rest (rest_after) keeps both.
-    rest_after: float | None = 0.5  # hold: from this time into the hold [s] on, a level ends as stable at
-    #   the first record at which the largest displacement grew by less than rest_growth x size over the
-    #   last rest_window (under a constant load a structure at rest is in equilibrium; a collapse after
-    #   it came to rest is set off by solver chatter, see hold_time); None: every level held hold_time.
-    #   Measured: (1) the 265 levels of benchmarks/validate_dem.py (22 cases, no sliding and reference
-    #   friction) re-run held 1 s with their histories: no level that collapsed within the 1 s hold is
-    #   ended by the rule (the smallest growth over 0.1 s, 0.5 s or more into the hold, of a level that
-    #   collapsed later was 6.8e-4 x size: Sh06-Sd015 glued, reference friction, 0.995 x the LP,
-    #   collapsed 0.97 s into the hold); 135 of the 143 stable levels end 0.5-0.87 s into the hold, and
-    #   the simulated time is 0.80 of the full hold's. (2) validate_dem.py with the rule: the same levels
-    #   and outcomes as held 1 s on all 44 tilt tests (so the same lambdas: no-sliding mean error 0.86 %,
-    #   21 of 22 within 3 %, hinges 20 of 22, reference <= no sliding + 1 % 22 of 22) in 206 s against
-    #   258 s. (3) The glued catalogue map (benchmarks/bench_map.py --specimens all, 167 cases, 2 cores):
-    #   8.7 min against 11.0 min, the same mu* on all 11 specimens; 164 of 167 points identical, the
-    #   other 3 (rocking) moved from 0.5 %, 0.5 % and 2.0 % below the no-sliding lambda to 1.0 % above,
-    #   1.0 % above and 0.5 % below it: a spurious late collapse no longer ends the bracket. (4) The
-    #   single block sliding at mu = 0.3 reads the 1 s hold's lambda with both engines. Checked from
-    #   0.4 s into the hold the rule also ends 2 collapses below the LP with no sliding (spurious: the LP
-    #   is exact there; simulated time 0.75); from 0.3 s, one at the reference friction too (Sh02-Sd015
-    #   free, 0.9875 x the associative LP, collapsed 0.87 s into the hold after 0.3 s at rest).
-    rest_window: float = 0.1  # hold: window of the rest rule [s]
-    rest_growth: float = 3e-4  # hold: rest rule, displacement growth over rest_window / size. Stable
-    #   levels 0.5 s into the hold: median 5e-6, 90 % below 4.4e-4, largest 4.8e-3 (creeping)
-    tol: float = 0.005  # hold: relative bracket width at which bisection stops
-    guess_bracket: tuple[float, float] = GUESS_BRACKET  # hold with a guess: first bracket [x guess]
-    #   (see GUESS_BRACKET for the measurement behind it)
-    probe_ends: str = PROBE_ENDS  # hold: when the ends of the first bracket are simulated. "last": only if
-    #   the bisection ends on one (until then an end is a guess; one that turns out wrong moves the
-    #   bracket outward as "first" does); "first": both before bisecting, upper end first (results
-    #   written before this field). Both end on a bracket whose two ends were simulated. See
-    #   PROBE_ENDS for the measurement behind the default.
-    scan_rate: float = 0.25  # hold: rate of the first-estimate ramp [1/s]
+
+    # hold: each level ramped, held, ended early once at rest (docs/decisions/001-hold-time-and-rest-rule.md)
+    ramp_time: float = 0.5  # smooth ramp to each level [s]; faster ramps lost hinge layouts (decision 007)
+    hold_time: float = 1.0  # longest time held at a level [s]: a block sliding near mu needs it
+    rest_after: float | None = 0.5  # from this time into the hold [s] a level at rest ends as stable; None: never
+    rest_window: float = 0.1  # window of the rest rule [s]
+    rest_growth: float = 3e-4  # rest rule: displacement growth over rest_window / size
+
+    # hold: the search (docs/physics/dem.md#7-tilt-test-hold-and-bisect)
+    tol: float = 0.005  # relative bracket width at which bisection stops
+    guess_bracket: tuple[float, float] = GUESS_BRACKET  # first bracket [x guess]
+    probe_ends: str = PROBE_ENDS  # "last": an end simulated only if the bisection ends on it; "first": both first
+    scan_rate: float = 0.25  # rate of the first-estimate ramp [1/s]
     max_sims: int = 30
+
     step: float = 0.01  # staircase: lambda increment
     stair_hold: float = 0.5  # staircase: hold per step [s]
     rate: float = 0.02  # ramp: d lambda / dt [1/s]
     lam_max: float = 3.0  # give up above this lambda
+
     guess: float | None = None  # hold: first estimate of lambda; None: found as ``start`` says
-    start: str = "auto"  # hold, without a guess: "scan" (a continuous ramp at scan_rate), "lp" (the
-    #   static LP of the same blocks at the run's friction, lp_guess; tilt() needs the assembly) or
-    #   "auto": "lp" when tilt() is given the assembly, else "scan" (the result stores which). Measured
-    #   (benchmarks/validate_dem.py, 22 cases, machine-independent engine inputs, ramped 1 s): no-sliding
-    #   error vs the LP, LP start mean 0.76 %, 21 of 22 within 3 %, hinge layouts 18 of 22, reference <=
-    #   no sliding + 1 % 21 of 22, 265 simulations, 488 s; scan start 1.25 %, 20, 16, 21, 395, 587 s.
-    #   Before that change, on the same machine: LP 1.04 %, 21/22; scan 1.63 %, 19/22
+    start: str = "auto"  # hold: "scan" (a ramp at scan_rate), "lp" (lp_guess), "auto" (lp when the blocks are known)
 
     def __post_init__(self) -> None:
         if self.kind not in ("hold", "staircase", "ramp"):

@@ -20,46 +20,13 @@ from specimens.geometry import PointedArch
 
 
 DEM_CASE = "dem.studies.cases:tilt_case"
-
-
-
 SYNTHETIC_CASE = "dem.studies.cases:synthetic_case"
-
-
-
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
-
-
-
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
-
-
-
-# Default protocol of a map tilt: hold-and-bisect to MAP_TILT_TOL, first bracket around the static
-# LP of the same blocks at the case's friction ("start": "lp", dem.experiments.tilt.tilt, also the tilt
-# test's default): 4 simulations per tilt instead of 7 from the ramp scan (2.5 since probe_ends,
-# below). The map's output is the mode and mu*, where the saving matters.
-# The map keeps the first bracket (0.95, 1.01) x LP, not the tilt test's tighter GUESS_BRACKET: it reads
-# the mode of the collapsing level of a 2 % bracket, and with (0.972, 1.01) that level lies nearer the
-# threshold. Measured (benchmarks/bench_map.py --specimens all, 167 cases, 2 cores, same machine):
-# with (0.972, 1.01) 3 simulations per tilt instead of 4 (7.1 min against 8.6 min), but 88 of the 160
-# common points moved (-1.9 to +1.5 %) and the DEM mu* against the LP's went from -1.7 to +0.8 % on
-# the 8 bracketed specimens to -2.2 to +13 % (Sh06-Sd015: mu = 0.4 read "mixed", a hinge+slide at L7
-# in a collapse at 0.99 x LP, where 1.01 x LP had read "rocking"; mu* 0.406 against 0.356, LP 0.359).
-# Like the tilt test it simulates an end of that bracket only if the bisection ends on it
-# (TiltProtocol.probe_ends; the final bracket, and so the level the mode is read at, is the same
-# as with both ends first). Measured (the same benchmark): 421 simulations against 668 (2.5 per
-# tilt), all 167 points identical (lambda and mode), so the same mu* on every specimen; 345 s
-# against 517 s (not paired: the machine read about 1.3 s per simulated second for the first and
-# 1.4-1.6 for the second).
+# A map tilt reads the mode of the collapsing level of a 2 % bracket started at the LP; a bracket as
+# narrow as the tilt test's moved that level nearer the threshold and mu* with it
 MAP_GUESS_BRACKET = (0.95, 1.01)  # wider than the tilt test's: docs/decisions/004-map-guess-bracket.md
-
-
-
 MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp", "guess_bracket": list(MAP_GUESS_BRACKET)}
-
-
-
 # the hold's timing, rest rule and first bracket (and the order of its ends), written out in every
 # case (see make_case)
 CASE_PROTOCOL_FIELDS = ("ramp_time", "hold_time", "rest_after", "rest_window", "rest_growth", "guess_bracket",
