@@ -1,4 +1,4 @@
-"""Failure domains (spec 02 §2.4): collapse amplitudes over a grid of frequencies or durations.
+"""Failure domains (docs/physics/dynamics.md#10-failure-domains): collapse amplitudes over a grid of frequencies or durations.
 
 For every grid value ``x`` (frequency [Hz] of a sine pulse, or duration ``t_i`` [s] of pulse A/B)
 the amplitude axis ``[a_min, a_max]`` is scanned (``n_scan`` amplitudes, geometric spacing) and

@@ -1,4 +1,4 @@
-"""Time integration of a rocking mechanism across impacts (spec 02 §2.4).
+"""Time integration of a rocking mechanism across impacts (docs/physics/dynamics.md#6-time-integration-and-the-collapse-rule).
 
 :func:`simulate` integrates ``M phi'' + M'/2 phi'^2 + V' = -a_g(t) sum m x'`` with
 ``scipy.integrate.solve_ivp`` (DOP853, tight tolerances) and event detection: an impact at

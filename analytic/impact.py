@@ -1,4 +1,4 @@
-"""Impact at the return to rest (spec 02 §2.3).
+"""Impact at the return to rest (docs/physics/dynamics.md#5-impact).
 
 When a rocking mechanism comes back to ``phi = 0`` its hinges close and a new mechanism,
 opening the other way, takes over. No sliding, no bouncing, instantaneous impulses at the new
@@ -102,7 +102,7 @@ def energy_restitution(before: Mechanism, after: Mechanism) -> float:
 
 
 def post_impact(before: Mechanism, restitution: float | None = None) -> ImpactTransition:
-    """The mechanism that takes over after ``before`` closes (spec 02 §2.3).
+    """The mechanism that takes over after ``before`` closes (docs/physics/dynamics.md#5-impact).
 
     ``restitution``: ``None`` (momentum balance) or a user energy restitution in [0, 1].
     """

@@ -1,6 +1,6 @@
 """Horizontal ground-acceleration inputs, shared by the linkage models and the simulator.
 
-Spec 02 §2.4. Every input is a frozen object with ``acceleration(t)`` [m/s^2] (zero
+docs/physics/dynamics.md#8-ground-motion-inputs. Every input is a frozen object with ``acceleration(t)`` [m/s^2] (zero
 outside its support), ``duration`` [s] and ``breakpoints`` (times where the signal or its
 slope jumps: an ODE integrator should stop there). Amplitudes are in m/s^2; use
 :data:`G` to convert from g.
@@ -106,7 +106,7 @@ class SinePulse(GroundMotion):
     """One cycle ``a sin(2 pi f t + phase)`` for ``t in [0, (2 pi - phase) / (2 pi f)]``.
 
     ``phase = 0`` is the plain one-cycle sine of a shake table; :meth:`phased` starts the
-    motion at the onset acceleration (spec 02 §2.4).
+    motion at the onset acceleration (docs/physics/dynamics.md#8-ground-motion-inputs).
     """
 
     a: float

@@ -1,4 +1,4 @@
-"""Four-hinge limit analysis of the continuous ring (spec 02 §2.1, continuous profile).
+"""Four-hinge limit analysis of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring, continuous profile).
 
 Hinges may sit anywhere on the intrados or the extrados; the macro-blocks are bounded by the
 cuts through the hinges. A cut is described by one **arch coordinate** ``u`` in ``[0, U]``,

@@ -1,6 +1,6 @@
 """Limit analysis of the discretised arch: kinematic enumeration and static (equilibrium) LP.
 
-Spec 02 §2.1. Loads: self-weight ``-g m`` and a horizontal body force ``load_sign * lambda g m``
+docs/physics/limit-analysis.md#1-assumptions-and-load. Loads: self-weight ``-g m`` and a horizontal body force ``load_sign * lambda g m``
 on every body (``load_sign = +1``: along +x). Masonry: rigid, no tension, infinitely strong in
 compression; joints may hinge (rotate about a corner) and, in the LP, slide (Coulomb,
 associative flow).
@@ -78,7 +78,7 @@ def four_hinge_lambda(
     load_sign: int = 1,
     rel_tol: float = 1e-9,
 ) -> FourHingeWork:
-    """Virtual-work multiplier of four-hinge layouts (spec 02 §2.1), vectorised over a batch.
+    """Virtual-work multiplier of four-hinge layouts (docs/physics/limit-analysis.md#2-the-four-hinge-mechanism), vectorised over a batch.
 
     ``H`` (..., 4, 2): hinge points left to right; ``Q`` (..., 4, 2): the other end point of each
     hinge's joint (or cut); ``n`` (..., 4, 2): joint normals pointing left to right;

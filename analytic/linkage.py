@@ -1,4 +1,4 @@
-"""Four-bar (rocking arch) and two-bar (sliding arch) linkages on the mechanism core (spec 02 §2.2).
+"""Four-bar (rocking arch) and two-bar (sliding arch) linkages (docs/physics/dynamics.md#3-the-four-bar-linkage, #4).
 
 **Four-bar**: hinges H1..H4 left to right, H1 and H4 on the fixed parts; block 1 (H1-H2) turns
 about H1 by ``sense * phi``, block 3 (H3-H4) about H4, block 2 (H2-H3) is the coupler. Position
@@ -328,7 +328,7 @@ def arch_four_bar(arch: PointedArch, layout: FourHingeLayout | Sequence[Hinge], 
 
 def alternative_four_bars(before: FourBar, n_grid: int = 33, keep: int = 3) -> list[FourBar]:
     """Admissible four-hinge mechanisms of the ring opening opposite to ``before`` that keep the most
-    kinetic energy through an impact from ``before`` (spec 02 §2.3), best first.
+    kinetic energy through an impact from ``before`` (docs/physics/dynamics.md#5-impact), best first.
 
     Exhaustive over cuts on a grid of ``n_grid`` arch coordinates (plus the cuts of ``before``), both
     alternating face patterns, vectorised: the material is split into grid pieces with exact
@@ -411,7 +411,7 @@ def alternative_four_bars(before: FourBar, n_grid: int = 33, keep: int = 3) -> l
     return out
 
 
-OPPENHEIM_ANGLES = (0.196, 1.374, 2.159, 2.945)  # polar angles about O [rad], spec 02 §2.5
+OPPENHEIM_ANGLES = (0.196, 1.374, 2.159, 2.945)  # polar angles about O [rad], docs/physics/limit-analysis.md#9-fixed-hinge-layouts
 
 
 def hinges_at_angles(arch: PointedArch, betas) -> tuple[Hinge, Hinge, Hinge, Hinge]:
@@ -431,7 +431,7 @@ def hinges_at_angles(arch: PointedArch, betas) -> tuple[Hinge, Hinge, Hinge, Hin
 
 
 def oppenheim_hinges(arch: PointedArch) -> tuple[Hinge, Hinge, Hinge, Hinge]:
-    """The fixed Oppenheim layout (spec 02 §2.5): hinges seen from O at 0.196, 1.374, 2.159 and
+    """The fixed Oppenheim layout (docs/physics/limit-analysis.md#9-fixed-hinge-layouts): hinges seen from O at 0.196, 1.374, 2.159 and
     2.945 rad (see :func:`hinges_at_angles`)."""
     return hinges_at_angles(arch, OPPENHEIM_ANGLES)
 
@@ -455,7 +455,7 @@ class CutLayout(FourHingeLayout):
 
 
 def minimised_layout(arch: PointedArch, density: float = 500.0) -> CutLayout:
-    """The minimum-multiplier layout of the continuous ring (spec 02 §2.1), with its cuts."""
+    """The minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring), with its cuts."""
     from analytic.limit_continuous import continuous_collapse
 
     res = continuous_collapse(arch, density=density)
@@ -466,7 +466,7 @@ def minimised_layout(arch: PointedArch, density: float = 500.0) -> CutLayout:
 
 def minimised_four_bar(arch: PointedArch, density: float = 500.0, direction: int = 1,
                        name: str = "four-bar (minimised)") -> FourBar:
-    """The four-bar of the minimum-multiplier layout of the continuous ring (spec 02 §2.1)."""
+    """The four-bar of the minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring)."""
     return arch_four_bar(arch, minimised_layout(arch, density), density, direction=direction, name=name)
 
 

@@ -1,4 +1,4 @@
-"""The generic one-degree-of-freedom mechanism (spec 02 §2.2).
+"""The generic one-degree-of-freedom mechanism (docs/physics/dynamics.md#1-one-degree-of-freedom-mechanisms).
 
 A mechanism is a set of rigid bodies (mass ``m_j`` [kg], centroidal in-plane inertia ``I_j``
 [kg m^2]) whose poses follow from one generalised coordinate ``phi`` [rad] (rotation of the
@@ -33,7 +33,7 @@ from scipy.optimize import brentq
 
 from specimens.constants import G
 
-#: default rotation limit as a multiple of phi_cr (spec 02 §2.4: "a fixed large multiple")
+#: default rotation limit as a multiple of phi_cr (docs/physics/dynamics.md#1-one-degree-of-freedom-mechanisms)
 LIMIT_FACTOR = 4.0
 
 
@@ -96,7 +96,7 @@ class Mechanism:
 
     @property
     def admissible(self) -> bool:
-        """Every hinge opens on the face opposite to it (spec 02 §2.1)."""
+        """Every hinge opens on the face opposite to it (docs/physics/limit-analysis.md#3-admissibility)."""
         return True
 
     @property

@@ -1,4 +1,4 @@
-"""The rectangular rocking block (spec 02 §2.2), the validation model of the linkage dynamics.
+"""The rectangular rocking block (docs/physics/dynamics.md#2-the-rocking-block), the validation model of the linkage dynamics.
 
 Half-width ``b``, half-height ``h`` [m], standing on y = 0 with its centroid at ``(0, h)``.
 ``pivot = -1`` rocks about the left base corner ``(-b, 0)`` (counter-clockwise, towards -x,

@@ -1,11 +1,11 @@
-"""Two-bar rocking-sliding model of a thick, sharp arch (spec 02 §2.2).
+"""Two-bar rocking-sliding model of a thick, sharp arch (docs/physics/limit-analysis.md#8-the-two-bar-sliding-model).
 
 Two rigid halves (the left and right halves of the continuous ring, split at the symmetry
 axis, each with its half of the keystone zone), each hinged at a springing corner on the base
 and joined at the crown by a slider whose sliding plane is vertical (normal to the ground):
 relative motion at the slider is vertical, horizontal displacement continuous. The slider
 point is ``S = (Re cos(pi - g_a) + e, Re sin(pi - g_a))``, ``g_a = pi/2 - asin(e/Ri)``
-(the extrados end of the left apex cut; spec notation).
+(the extrados end of the left apex cut: g_a = psi_i; docs/physics/limit-analysis.md#8-the-two-bar-sliding-model).
 
 For a horizontal load along +x both halves rotate clockwise by the same angle (horizontal
 continuity at S with both hinges on y = 0); admissibility places the left hinge at the

@@ -1,4 +1,4 @@
-"""Convergence in the time step of the frictional tilt threshold (spec 04 §4.3), one specimen,
+"""Convergence in the time step of the frictional tilt threshold (docs/engines.md#8-convergence-in-the-numerical-settings), one specimen,
 each engine: hold-protocol lambda at the reference friction (and optionally at no sliding)
 for a sequence of dt. MuJoCo's internal step is settings.dt itself when dt <= 0.5 ms.
 Writes benchmarks/results/engine_convergence_<id>.json (not part of ``make bench``: ~10-20 min).

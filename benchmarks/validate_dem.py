@@ -1,4 +1,4 @@
-"""Full validation of the DEM (spec §3.4) on the 11 catalogue specimens, glued and free.
+"""Full validation of the DEM (docs/validation.md#1-how-to-reproduce) on the 11 catalogue specimens, glued and free.
 
 For each specimen and configuration: rest drift over 5 s (reference friction), tilt lambda with
 no sliding (mu = 10 everywhere) against the discrete LP, hinge joints against the LP layout (or

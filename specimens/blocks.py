@@ -1,4 +1,4 @@
-"""Discretisation of a pointed arch into voussoirs, crown and rigid bodies (spec 01 §1.2).
+"""Discretisation of a pointed arch into voussoirs, crown and rigid bodies (docs/physics/geometry.md#4-discretisation).
 
 Naming, from the left springing to the right springing:
 
@@ -32,7 +32,7 @@ from specimens.sections import SectionProperties, is_convex, polygon_properties,
 
 Shape = Literal["linearised", "curved"]
 Config = Literal["glued", "free"]
-DEFAULT_DENSITY = 500.0  # kg/m^3, autoclaved aerated concrete (spec 01 §1.3)
+DEFAULT_DENSITY = 500.0  # kg/m^3, autoclaved aerated concrete (docs/physics/geometry.md#7-mass-properties)
 DEFAULT_VOUSSOIRS = 8
 
 
@@ -249,7 +249,7 @@ def discretise(
     density: float = DEFAULT_DENSITY,
     segments: int = 4,
 ) -> Assembly:
-    """Cut ``arch`` into ``n_voussoirs`` voussoirs per side plus a crown (spec 01 §1.2).
+    """Cut ``arch`` into ``n_voussoirs`` voussoirs per side plus a crown (docs/physics/geometry.md#4-discretisation).
 
     ``density`` in kg/m^3; ``segments`` = chords per voussoir for the curved shape.
     """

@@ -1,6 +1,6 @@
 """The catalogue of the 11 reduced-scale AAC specimens and the full-scale parametric set.
 
-Spec 01 §1.3-1.4. All catalogue arches have ``Rc = 0.200 m`` and width 0.100 m.
+docs/physics/geometry.md#9-the-specimen-catalogue (and #10). All catalogue arches have ``Rc = 0.200 m`` and width 0.100 m.
 """
 from __future__ import annotations
 
@@ -68,7 +68,7 @@ def full_scale_set(
     slenderness: tuple[float, ...] = FULL_SCALE_SD,
     width: float = 1.0,
 ) -> list[Specimen]:
-    """The parametric set of full-scale arches (spec 01 §1.4): span = 2 Rc.
+    """The parametric set of full-scale arches (docs/physics/geometry.md#10-the-full-scale-parametric-set): span = 2 Rc.
 
     Default: 3 spans x 4 sharpness values (round arch included) x 4 slenderness values = 48.
     """

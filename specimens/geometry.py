@@ -1,6 +1,6 @@
 """The two-centred pointed arch (continuous ring).
 
-Frame (spec 01 §1.1): x horizontal, y vertical (up), origin at mid-span on the
+Frame (docs/physics/geometry.md#1-frame-and-units): x horizontal, y vertical (up), origin at mid-span on the
 springing line; the out-of-plane width ``width`` runs along z. The right half
 (x >= 0) is the annulus centred at ``C_R = (-e, 0)``, the left half its mirror
 centred at ``C_L = (+e, 0)``. Polar angles ``psi`` are measured about the centre of

@@ -83,7 +83,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
         "summary": "Plain one-cycle sine pulses; least collapsing amplitude by amplitude scan then bisection of the lowest "
                    "collapsing bracket; four-bar (minimised layout) and two-bar thresholds for the same input. "
                    "Measured sensitivity to the engine's numerics (benchmarks/shake_convergence.py): within 2.5 % "
-                   "at 2-4 Hz, 14 % to a factor 2.2 at 6 Hz (dem/experiments/thresholds.py), so ratios above 4 Hz are ranges.",
+                   "at 2-4 Hz, 14 % to a factor 2.2 at 6 Hz (docs/validation.md#10-shake-thresholds), so ratios above 4 Hz are ranges.",
         "tables": [{"name": "shake", "title": "Shake-table thresholds [g]", "csv": "shake/shake.csv"}],
         "figures": figures, "findings": findings,
     }

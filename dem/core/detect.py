@@ -1,4 +1,4 @@
-"""Collapse and failure-mode detection from body poses alone (spec §3.3, §4.4).
+"""Collapse and failure-mode detection from body poses alone (docs/physics/dem.md#5-collapse-criterion, #6-failure-mode).
 
 Collapse criterion (no per-specimen tuning): some material point of some body has moved more
 than ``collapse_fraction x size`` (size = ring thickness of an arch, height of a block) from its

@@ -1,7 +1,7 @@
 """The load: the gravity field as a function of time, in the arch frame (y up).
 
 * static tilt: gravity rotated by ``theta`` at constant magnitude,
-  ``g (sin theta, -cos theta, 0)`` with ``lambda = tan theta`` (spec §3.2); the horizontal
+  ``g (sin theta, -cos theta, 0)`` with ``lambda = tan theta`` (docs/physics/dem.md#3-loads); the horizontal
   component points to +x;
 * a level reached by a smooth ramp (``ramp``) or a linear one in ``lambda`` (``linear``);
 * a horizontal ground acceleration ``a_g(t)`` (:class:`analytic.inputs.GroundMotion`), applied

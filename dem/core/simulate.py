@@ -230,7 +230,7 @@ def read_mode(model: Model, settings: Settings, hist: History,
 def onset_time(model: Model, settings: Settings, sim: SimResult) -> float:
     """Time [s] at which the motion that ended in the collapse of ``sim`` started: the first
     record of the last excursion of the largest displacement above ``mode_window[0] x size``
-    (the lower end of the mode window, above pre-collapse creep; spec 04 §4.1)."""
+    (the lower end of the mode window, above pre-collapse creep; docs/physics/dem.md#8-tilt-test-staircase-and-ramp)."""
     below = np.flatnonzero(sim.history.dmax < settings.mode_window[0] * model.size)
     k = min(int(below[-1]) + 1, len(sim.history.t) - 1) if len(below) else 0
     return float(sim.history.t[k])

@@ -1,4 +1,4 @@
-"""Friction-threshold maps: the DEM tilt test swept over the joint friction ``mu`` (spec 03 §3.1-3.2).
+"""Friction-threshold maps: the DEM tilt test swept over the joint friction ``mu`` (docs/physics/dem.md#12-friction-map-and-mu).
 
 For each specimen (a catalogue arch or any :class:`~specimens.geometry.PointedArch`) a
 **study** (:mod:`dem.studies.sweep`) runs one tilt test per friction value of a grid; each case gives

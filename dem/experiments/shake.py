@@ -9,17 +9,17 @@ MuJoCo; see the engines). Both give the same relative motion; results are in the
 Run: the motion, then a zero tail (``ShakeProtocol.tail`` [s]) so that a rocking arch either
 comes back to rest or falls. Poses are recorded every ``ShakeProtocol.record_every`` [s].
 
-**Collapse in a shake** (spec §3.3, no per-specimen tuning): some body point has moved more than
+**Collapse in a shake** (docs/physics/dem.md#5-collapse-criterion, no per-specimen tuning): some body point has moved more than
 ``collapse_fraction x size`` (size = ring thickness of an arch, height of a single block) while
 that body still moves faster than ``Settings.collapse_speed``. The fraction is 1.0 by default,
 larger than the 0.06 of the tilt test: under a pulse a mechanism may open well past its static
-limit during the input and still close again (spec 02: passing ``phi_cr`` while the input acts
+limit during the input and still close again (docs/physics/dynamics.md#6-time-integration-and-the-collapse-rule: passing ``phi_cr`` while the input acts
 is not collapse), whereas a body point displaced by a full ring thickness (a block: by its
 height, i.e. rotated ~2 x its slenderness angle) is falling.
 
 **First impact / rebound**: from the horizontal displacement ``u(t)`` of the crown body's
 centroid (the block's centroid for a single block). The motion starts when ``|u|`` first
-exceeds ``onset_mm`` (default 0.1 mm, above the at-rest drift of spec 04); the first rebound is
+exceeds ``onset_mm`` (default 0.1 mm, above the at-rest drift, docs/validation.md#2-at-rest); the first rebound is
 the first later instant where the crown velocity ``du/dt`` changes sign (the first extremum of
 ``u``): the opening mechanism stops and closes back, which is where the analytic model's first
 impact follows. ``collapse_phase`` is ``"before-first-rebound"`` (the analytic

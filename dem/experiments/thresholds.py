@@ -1,9 +1,9 @@
 """Shake thresholds: the least collapsing amplitude of a one-cycle sine pulse, and DEM failure
 domains over frequency.
 
-Collapse is not monotonic in the amplitude (spec 04 §4.3: Sh02-Sd020 at 4 Hz collapses from
-~0.45 g but survives again around 0.78-0.9 g), so plain bisection may return either edge of a
-survival window. :func:`threshold` therefore
+Collapse is not monotonic in the amplitude (Sh02-Sd020 at 4 Hz collapses from ~0.45 g but survives
+again around 0.78-0.9 g; docs/physics/dem.md#10-shake-thresholds-and-dem-failure-domains), so plain
+bisection may return either edge of a survival window. :func:`threshold` therefore
 
 1. **scans** amplitudes ``a_min .. a_max`` with geometric spacing (ratio ``scan_ratio``), in
    parallel (``concurrent.futures.ProcessPoolExecutor``, all cores by default);
@@ -15,16 +15,9 @@ survival window. :func:`threshold` therefore
 3. reports every band found by the scan (survival / collapse), its edges at the geometric middle
    of the scan bracket (resolution ``scan_ratio``) except the bisected first threshold.
 
-**How far a threshold is a number of the arch, not of the engine** (``benchmarks/shake_convergence.py``,
-glued, reference friction, PyBullet dt 0.25-1 ms x 20-400 solver iterations and MuJoCo internal
-step 0.125-0.25 ms): at 2-4 Hz the first collapse is robust, Sh06-Sd015 2 Hz 0.341-0.347 g (3
-settings, 1.7 %), Sh02-Sd020 4 Hz 0.452-0.463 g (6 settings
-at dt <= 0.5 ms, 2.5 %; 0.440 g at dt 1 ms with 50 iterations); at 6 Hz it is not, Sh02-Sd020
-0.606-0.692 g (3 settings, 14 %), Sh06-Sd015 0.584-1.262 g (10 settings: PyBullet 0.910 g at the
-defaults, 0.783 / 0.720 g with 200 / 400 iterations, 0.726 / 0.584 g at dt 0.25 ms with 100 / 200;
-MuJoCo 1.262 g at 0.25 ms, 0.690 g at 0.125 ms). Neither engine converges there: above the first
-collapse the outcome alternates between collapse and survival bands, and a narrow low collapse band
-appears or vanishes with the numerics. Read thresholds above ~4 Hz as a range, not to 1 %.
+How far a threshold is a number of the arch and not of the engine's numerics: robust at 2-4 Hz,
+not converged at 6 Hz in either engine, so read thresholds above ~4 Hz as a range
+(docs/validation.md#10-shake-thresholds).
 
 A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
 (:class:`analytic.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes

@@ -45,7 +45,7 @@ def test_bands_are_contiguous_and_classified(fb):
 
 def test_temporary_recovery_is_reported(fb):
     """At 3.5 Hz this arch collapses after an impact, survives a band above, then collapses in the
-    first half-cycle: both thresholds are reported (spec 02 §2.4)."""
+    first half-cycle: both thresholds are reported (docs/physics/dynamics.md#10-failure-domains)."""
     a0 = abs(fb.onset)
     col = domain_column(fb, "sine", 3.5, a0 * (1 + 1e-9), 10 * a0, n_scan=24, tol=1e-3)
     outcomes = [b.outcome for b in col.bands]

@@ -53,7 +53,7 @@ def test_curved_areas_sum_to_exact_arch_area(sid):
     a = get_specimen(sid).arch
     asm = discretise(a, config="free", shape="curved")
     total = sum(b.area for b in asm.bodies)
-    # spec 01 §1.2: polygonisation changes the area by < 0.5 %
+    # docs/physics/geometry.md#11-identities-the-tests-check: polygonisation changes the area by < 0.5 %
     assert total == pytest.approx(a.area(), rel=5e-3)
     # chords cut area off the extrados and add some under the intrados; the extrados (larger radius) wins
     assert total < a.area()

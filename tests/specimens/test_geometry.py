@@ -69,7 +69,7 @@ def test_round_arch_limit():
 
 
 def test_exact_area_by_sectors_and_keystone():
-    # spec 01 §1.5: 2 x sector up to psi_i + keystone zone; keystone computed here by shoelace
+    # docs/physics/geometry.md#11-identities-the-tests-check: 2 x sector up to psi_i + keystone zone; keystone computed here by shoelace
     # on a very fine polygon (independent route), sectors in closed form
     a = get_specimen("Sh1-Sd020").arch
     sector = 0.5 * (a.Re**2 - a.Ri**2) * a.psi_i

@@ -4,9 +4,7 @@ Near a threshold an engine's outcome is chaotic: a difference in the last bit of
 or of the gravity of one step can move a tilt lambda by several per cent. Such differences
 come from the machine, not from the model: numpy picks SIMD kernels (AVX-512 or not) and
 glibc picks FMA variants of ``sin``/``cos``/``atan`` at run time, and BLAS/LAPACK kernels
-(``eigh``, ``@``) differ by CPU. Measured: Sh1-Sd020 glued, no sliding, scan start, gave
-lambda 0.4124 (-5.5 % from the LP) on an AVX-512 machine, 0.4372 (+0.14 %) with numpy's
-AVX2/AVX-512 kernels disabled, 0.4361 (-0.12 %) with glibc's FMA/AVX variants disabled.
+(``eigh``, ``@``) differ by CPU (measured: docs/engines.md#7-reproducibility-and-input-rounding).
 
 Every number an engine receives therefore goes through these functions: lengths and
 accelerations are rounded to a fixed grid, masses and moments to 10 significant digits, the

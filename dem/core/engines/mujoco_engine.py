@@ -19,15 +19,11 @@ The model is built in memory as an MJCF string from the engine-neutral :class:`d
   elliptic cone, Newton solver, ``implicitfast`` integrator, multi-point convex collision
   (``multiccd``, on by default in 4.x) so a face-face contact gets several points.
 
-Settings from spec 04 §4.2, re-measured here (see ``tests/dem/core/engines/test_mujoco_engine.py`` and
-``benchmarks/bench_engines.py``): with MuJoCo's default ``solref`` 0.02 s the contacts are
-soft enough that an arch sinks and collapses at rest; ``solref = (0.001, 1)``,
-``solimp = (0.99, 0.999, 0.0001)`` and 10 no-slip iterations keep the rest drift below
-0.005 mm in 10 s. The ``solref`` time constant must be >= 2 dt (MuJoCo's ``refsafe``), so the
-internal step is at most 0.5 ms; with Coulomb friction 0.5 ms is not converged (see
-``MuJoCoOptions.max_dt``), so the default internal step is 0.25 ms: ``step(n)`` advances
-``n * settings.dt`` in ``ceil(settings.dt / max_dt)`` equal sub-steps per step, so protocols written for ``settings.dt`` are unchanged and a
-smaller ``settings.dt`` refines MuJoCo's step too.
+Options (:class:`MuJoCoOptions`; why: docs/engines.md#3-mujoco-settings): MuJoCo's default contacts
+are soft enough that an arch sinks at rest, hence a stiff ``solref``/``solimp`` and no-slip
+iterations. ``step(n)`` advances ``n * settings.dt`` in ``ceil(settings.dt / max_dt)`` equal
+sub-steps per step, so protocols written for ``settings.dt`` are unchanged and a smaller
+``settings.dt`` refines MuJoCo's step too.
 """
 from __future__ import annotations
 
@@ -45,11 +41,10 @@ from specimens.mesh import prism
 
 @dataclass(frozen=True)
 class MuJoCoOptions:
-    """MuJoCo-specific solver and contact parameters (defaults: spec 04 §4.2, re-measured)."""
+    """MuJoCo-specific solver and contact parameters (docs/engines.md#3-mujoco-settings)."""
 
-    max_dt: float = 2.5e-4  # [s] largest internal step. 0.5 ms (spec 04) is exact to 0.5 % at no sliding but
-    #   not converged with friction: Sh06-Sd025 glued at 0.577/1.0 gives lambda 0.419-0.450 at 0.5 ms, 0.4634
-    #   at 0.25 ms, 0.4633 at 0.125 ms (Sh1-Sd025: 0.461-0.467, 0.4688, 0.4700); 1 ms breaks solref (tc >= 2 dt)
+    max_dt: float = 2.5e-4  # [s] largest internal step: 0.5 ms is not converged with friction, 1 ms breaks
+    #   solref (tc >= 2 dt) (docs/decisions/006-solver-settings.md#mujoco-internal-step)
     solref: tuple[float, float] = (0.001, 1.0)  # contact time constant [s], damping ratio; 0.02 collapses at rest
     solimp: tuple[float, float, float] = (0.99, 0.999, 0.0001)  # impedance near 1: stiff, little penetration
     noslip_iterations: int = 10  # post-solve no-slip pass; removes creep of blocks under static friction

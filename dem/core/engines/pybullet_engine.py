@@ -1,6 +1,7 @@
 """PyBullet backend (DIRECT mode; one physics client per instance).
 
-Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
+Choices (the measurements behind them: docs/engines.md#2-pybullet-settings and
+docs/decisions/006-solver-settings.md):
 
 * every convex piece is a mesh shape loaded from its own OBJ file (unique temporary directory
   per instance) with ``URDF_INITIALIZE_SAT_FEATURES`` so that face-face contacts get polyhedral
@@ -13,19 +14,12 @@ Choices (spec 04 §4.1, re-measured in ``benchmarks/validate_dem.py``):
 * driven base (shake table): PyBullet has no kinematic bodies, so the base is a dynamic body
   10^6 times heavier than the arch, its weight cancelled by an external force every step and
   its velocity reset every step to the one that lands it on the prescribed position at the end
-  of the step (spec 04 §4.3: such a base tracked the motion to 0.3 um);
-* bodies are PyBullet multibodies (``useMaximalCoordinates`` off, the default). Maximal-coordinate
-  rigid bodies step about 2x faster here (0.52-0.61 against 1.0-1.2 ms per 0.5 ms step, glued
-  Sh06-Sd015, 100 iterations) but were rejected by measurement: with the default
-  ``solverResidualThreshold`` their solver stops early and a block with mu 0.3 sticks up to
-  lambda 0.325 (+8 %); with it at 0 the block still slides only at 0.307 (+2.3 %, past the 2 %
-  gate) because of the friction anchors, and without anchors free Sh06-Sd010 drifts 0.47 mm in
-  5 s at rest; contactBreakingThreshold 0.05-0.2 mm gave +0.9 to +2.4 % and 0.06-0.17 mm of drift
-  around the 0.1 mm gate. Multibodies: 0.301 and 0.085 / 0.063 mm (Sh06-Sd010 free / Sh1-Sd025 glued);
+  of the step (docs/physics/dem.md#13-driven-base-or-inertial-field);
+* bodies are PyBullet multibodies (``useMaximalCoordinates`` off, the default): maximal-coordinate
+  bodies step about 2x faster but let a block stick past its friction angle or drift at rest
+  (docs/decisions/006-solver-settings.md#pybullet-body-type);
 * every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
-  gravity of every step) is first made machine-independent (:mod:`dem.core.engines.inputs`): near a
-  threshold a last-bit difference from numpy's or OpenBLAS's CPU-specific kernels moved a tilt
-  lambda from 0.14 % above to 5.5 % below the LP;
+  gravity of every step) is first made machine-independent (:mod:`dem.core.engines.inputs`);
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).

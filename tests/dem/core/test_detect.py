@@ -1,4 +1,4 @@
-"""Joint states from poses (spec §4.4) on imposed rigid motions of a single block: exact kinematics."""
+"""Joint states from poses (docs/physics/dem.md#6-failure-mode) on imposed rigid motions of a single block: exact kinematics."""
 import math
 
 import numpy as np

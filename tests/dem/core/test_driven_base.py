@@ -28,7 +28,7 @@ def arch():
 @pytest.mark.parametrize("engine", ENGINES)
 def test_base_follows_prescribed_displacement(arch, engine):
     # 0.5 s of a 4 Hz, 5 mm displacement with the arch standing on the base: the heavy base lands
-    # on the prescribed position every step (spec 04 §4.3 measured 0.3 um for such a base; 1 um
+    # on the prescribed position every step (0.3 um measured for such a base, docs/physics/dem.md#13-driven-base-or-inertial-field; 1 um
     # is the bound asserted, 1/100 of the 0.1 mm at-rest drift allowed for the arch)
     s = Settings(engine=engine)
     e = get_engine(engine)
@@ -49,7 +49,7 @@ def test_base_follows_prescribed_displacement(arch, engine):
 def test_below_rocking_onset_the_arch_moves_with_the_base(arch, engine):
     # 0.3 g at 4 Hz is below this arch's static onset (lambda 0.35): the arch must ride on the base.
     # The ground moves ~5 mm (a / omega^2), so an arch left behind by a base that does not drag it
-    # would show mm of table-frame displacement; 0.1 mm is the at-rest drift bound (spec §3.4).
+    # would show mm of table-frame displacement; 0.1 mm is the at-rest drift bound (docs/validation.md#2-at-rest).
     m = SinePulse(0.3 * G, 4.0)
     # the whole duration (no end at rest, which the two loads reach at different records), so that
     # the recorded fields can be compared record by record
@@ -68,7 +68,7 @@ def test_below_rocking_onset_the_arch_moves_with_the_base(arch, engine):
 def test_threshold_same_with_driven_base(arch):
     """Least collapsing one-cycle 4 Hz sine of Sh02-Sd020 (glued, reference friction, PyBullet):
     inertial field and driven base within 2 % (the issue's tolerance; measured +0.8 %: 0.4554 g
-    and 0.4592 g from a full scan). The scan is narrowed to 0.40-0.60 g around spec 04's ~0.45 g
+    and 0.4592 g from a full scan). The scan is narrowed to 0.40-0.60 g around that ~0.45 g (docs/validation.md#11-driven-base-against-inertial-field)
     to keep the test near one minute; each bracket is bisected to 1 %."""
     res = {ld: threshold(arch, 4.0, Settings(), ShakeProtocol(load=ld), a_min_g=0.40, a_max_g=0.60,
                          scan_ratio=1.1, tol=0.01)

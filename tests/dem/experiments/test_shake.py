@@ -1,4 +1,4 @@
-"""Shake-table runs: a single rectangular block against the rocking-block model (spec §3.4.2),
+"""Shake-table runs: a single rectangular block against the rocking-block model (docs/validation.md#3-single-block),
 the first-rebound definition, and the run file."""
 import math
 
@@ -55,14 +55,14 @@ def test_rocking_onset_is_g_b_over_h(block):
 @pytest.mark.parametrize("freq", [2.0, 3.0, 5.0])
 def test_overturning_amplitude_matches_rocking_block_model(block, freq):
     """The DEM overturning amplitude of a plain one-cycle sine lies within 10 % of the analytic
-    rocking-block threshold (spec 02 §2.2, Housner restitution from the momentum balance).
+    rocking-block threshold (docs/physics/dynamics.md#2-the-rocking-block, Housner restitution from the momentum balance).
 
     Measured by full DEM thresholds (scan + bisection to 1 %): 2 Hz 0.3105 g vs 0.3090 g (+0.5 %),
     3 Hz 0.3536 g vs 0.3602 g (-1.8 %), 5 Hz 0.751 g vs 0.811 g (-7.4 %). Tolerance 10 %: the
     threshold at these frequencies is decided by the first impact (collapse after the rebound), and
     the measured energy restitution of the DEM impact is 0.77-0.80 per impact against Housner's 0.83
     (PyBullet resolves the corner impact with 4 contact points and ERP, not an instantaneous
-    momentum balance) — the scatter expected of impact modelling (spec §3.4.2). Checked here by
+    momentum balance) — the scatter expected of impact modelling (docs/validation.md#3-single-block). Checked here by
     two runs per frequency: 10 % below the analytic threshold survives, 10 % above collapses.
     """
     from analytic.domain import failure_domain

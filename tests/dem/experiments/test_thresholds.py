@@ -21,7 +21,7 @@ def test_scan_grid_spacing():
 
 
 def test_bands_keep_survival_windows():
-    # collapse at 0.5, survival again at 0.8-0.9 (the spec 04 Sh02-Sd020 pattern), collapse from 1.0
+    # collapse at 0.5, survival again at 0.8-0.9 (the Sh02-Sd020 pattern, docs/physics/dem.md#10-shake-thresholds-and-dem-failure-domains), collapse from 1.0
     runs = [Outcome(a, c, "rocking", None) for a, c in
             [(0.3, False), (0.4, False), (0.5, True), (0.6, True), (0.8, False), (0.9, False), (1.0, True)]]
     b = _bands(runs, 0.45)
@@ -133,7 +133,7 @@ def test_arch_threshold_no_sliding_2hz_above_static_onset():
     r = threshold(from_assembly(asm, name="Sh02-Sd020"), 2.0, st, ShakeProtocol(tail=1.0), a_min_g=lam,
                   a_max_g=3 * lam, scan_ratio=1.25, tol=0.02, workers=2)
     assert r.amplitude_g is not None
-    # 1 % below: thresholds of the hold tilt test are ~1-4 % below the LP (spec 04), not more
+    # 1 % below: hold tilt thresholds lie at most 2.8 % below the LP (docs/validation.md#4-no-sliding-tilt-against-the-lp), not more
     assert r.amplitude_g >= lam * (1 - 0.01)
     fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch), direction=1)
     a_fb = failure_domain(fb, "sine0", [2.0], a_max_ratio=10, n_scan=24, workers=1).columns[0].thresholds[0][0] / G

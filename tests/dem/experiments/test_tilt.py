@@ -1,5 +1,5 @@
 """The staircase and continuous-ramp tilt protocols against the closed form of a single block
-(spec §3.4.1): the same two cases the hold-and-bisect protocol passes in test_engines_shared;
+(docs/validation.md#3-single-block): the same two cases the hold-and-bisect protocol passes in test_engines_shared;
 the hold protocol's LP start (its first bracket around the static LP of the same blocks)."""
 import functools
 from dataclasses import replace
@@ -50,7 +50,7 @@ def test_block_threshold(case, kind):
 
 
 def test_ramp_rate_insensitivity():
-    # spec §3.2: halving the ramp rate changes lambda by < 2 %
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate: halving the ramp rate changes lambda by < 2 %
     fast, slow = _run("rock", "ramp", 0.01), _run("rock", "ramp", 0.005)
     assert abs(fast.lam - slow.lam) / slow.lam < 0.02
 

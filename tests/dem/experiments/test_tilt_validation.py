@@ -1,4 +1,4 @@
-"""Tilt test against the discrete limit analysis (spec §3.4.3-4) on a representative specimen;
+"""Tilt test against the discrete limit analysis (docs/validation.md#4-no-sliding-tilt-against-the-lp) on a representative specimen;
 the 11 specimens x 2 configurations run in benchmarks/validate_dem.py."""
 import numpy as np
 import pytest
@@ -26,7 +26,7 @@ def case():
 # Measured on this specimen with the default protocol: no sliding 0.3513 (+0.05 % from the LP, LP
 # hinge layout), reference friction 0.3497 (from the former first bracket (0.95, 1.01) x LP: 0.3494,
 # -0.50 %, and 0.3507). Which catalogue case misses is a matter of the last
-# bits (spec 04: near the threshold PyBullet's outcome is not monotonic in lambda): with levels
+# bits (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold): with levels
 # ramped 1 s instead of 0.5 s this specimen collapsed spuriously at 0.3441 (-2.0 %) in a disordered
 # mechanism and failed the last two checks below, while the catalogue as a whole scored the same
 # (benchmarks/validate_dem.py; dem/core/settings.py gives the catalogue figures of the defaults).
@@ -56,7 +56,7 @@ def test_no_sliding_hinges_match_lp(case):
 
 @pytest.mark.slow
 def test_reference_friction_not_above_no_sliding(case):
-    # spec §3.4.4; 1 % = the reproducibility of thresholds measured near the bracket
+    # docs/validation.md#6-reference-friction; 1 % = the reproducibility of thresholds measured near the bracket
     asm, m, ns = case
     ref = tilt(m, Settings(), assembly=asm)
     assert ref.lam <= 1.01 * ns.lam
@@ -64,7 +64,7 @@ def test_reference_friction_not_above_no_sliding(case):
 
 @pytest.mark.slow
 def test_halving_dt(case):
-    # spec §3.2: halving dt changes lambda by < 2 %
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate: halving dt changes lambda by < 2 %
     asm, m, ns = case
     s = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)
     half = tilt(m, s.with_(dt=s.dt / 2), assembly=asm)
@@ -73,7 +73,7 @@ def test_halving_dt(case):
 
 @pytest.mark.slow
 def test_halving_the_hold_ramp_rate(case):
-    # spec §3.2 / the issue: halving the hold protocol's rate (TiltProtocol.slowed(2): ramp, hold and
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate / the issue: halving the hold protocol's rate (TiltProtocol.slowed(2): ramp, hold and
     # the rest rule's start and window twice as long) changes lambda by < 2 %. Measured with the
     # defaults (benchmarks/validate_dem.py --sensitivity): -0.47 % here and on Sh06-Sd015 (the same
     # with the rest rule's times left at 0.5 s and 0.1 s); from the former first bracket (0.95, 1.01),

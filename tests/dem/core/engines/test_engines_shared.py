@@ -1,4 +1,4 @@
-"""The validation every engine passes (spec §3.4), one test parametrised over the engines:
+"""The validation every engine passes (docs/validation.md#1-how-to-reproduce), one test parametrised over the engines:
 single block slides at mu / rocks at b/h under tilt, rest drift of two specimens, determinism
 (also with two instances alive in one process), and the planar option.
 

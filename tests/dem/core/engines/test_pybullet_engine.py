@@ -16,7 +16,7 @@ def test_unknown_engine():
 
 def test_friction_product_rule_gives_the_requested_pairs():
     # Bullet combines a contact pair's friction as the product of the bodies' coefficients
-    # (spec 04 §4.1): block-block must come out as mu_joint and block-base as mu_base
+    # (docs/engines.md#2-pybullet-settings): block-block must come out as mu_joint and block-base as mu_base
     m = from_assembly(discretise(get_specimen("Sh06-Sd015").arch, config="glued"))
     s = Settings(mu_joint=0.577, mu_base=1.0)
     e = get_engine("pybullet")

@@ -1,0 +1,166 @@
+"""The shape of the house: layers point down only, library code never imports the CLI, no import
+cycles, comments stay short and cite only documents of the repository (docs/architecture.md)."""
+from __future__ import annotations
+
+import ast
+import io
+import re
+import tokenize
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+LAYERS = ("specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
+MAX_COMMENT_BLOCK = 8  # lines; longer explanations belong in docs/
+
+
+def _modules() -> dict[str, Path]:
+    mods = {}
+    for pkg in LAYERS:
+        for f in sorted((ROOT / pkg).rglob("*.py")):
+            parts = list(f.relative_to(ROOT).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            mods[".".join(parts)] = f
+    return mods
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Module -> the project modules it imports, at module level or inside functions."""
+    mods = _modules()
+
+    def resolve(name: str) -> str | None:
+        while name and name not in mods:
+            name = name.rpartition(".")[0]
+        return name or None
+
+    edges: dict[str, set[str]] = {m: set() for m in mods}
+    for m, f in mods.items():
+        pkg = m if f.name == "__init__.py" else m.rpartition(".")[0]
+        for node in ast.walk(ast.parse(f.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                targets = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    p = pkg.split(".")[: len(pkg.split(".")) - node.level + 1]
+                    base = ".".join(p + ([base] if base else []))
+                targets = [base] + [f"{base}.{a.name}" for a in node.names]
+            else:
+                continue
+            for t in targets:
+                r = resolve(t)
+                if r and r != m:
+                    edges[m].add(r)
+    return edges
+
+
+def _is_package_link(a: str, b: str) -> bool:
+    """A package's ``__init__`` re-exporting its own submodules (or a submodule importing its package)."""
+    return a.startswith(b + ".") or b.startswith(a + ".")
+
+
+def cycles(edges: dict[str, set[str]]) -> list[list[str]]:
+    """Strongly connected components of more than one module (Tarjan), package-to-own-child links left out."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on: set[str] = set()
+    out: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in edges[v]:
+            if _is_package_link(v, w):
+                continue
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in edges:
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_the_graph_sees_imports_inside_functions():
+    # the campaign runner imports the report inside a function: the graph must see it
+    assert "dem.campaign.report" in import_graph()["dem.campaign.runner"]
+
+
+def test_layers_point_down_only():
+    edges = import_graph()
+    layer = lambda m: LAYERS.index(m.split(".")[0])  # noqa: E731
+    upward = sorted(f"{a} -> {b}" for a in edges for b in edges[a] if layer(b) > layer(a))
+    assert upward == []
+
+
+def test_library_code_never_imports_the_cli():
+    edges = import_graph()
+    bad = sorted(f"{a} -> {b}" for a in edges for b in edges[a]
+                 if b.startswith("dem.cli") and not a.startswith("dem.cli"))
+    assert bad == []
+
+
+def test_no_import_cycles():
+    assert cycles(import_graph()) == []
+
+
+def test_cycle_detection_finds_a_cycle():
+    assert cycles({"a.x": {"a.y"}, "a.y": {"a.z"}, "a.z": {"a.x"}, "a.w": set()}) == [["a.x", "a.y", "a.z"]]
+
+
+def _comment_blocks(path: Path) -> list[tuple[int, int]]:
+    """(first line, length) of every run of consecutive lines that carry a comment (a field list with
+    a comment on every line counts as one block too)."""
+    text = path.read_text(encoding="utf-8")
+    lines = {tok.start[0] for tok in tokenize.generate_tokens(io.StringIO(text).readline) if tok.type == tokenize.COMMENT}
+    blocks, start, run = [], 0, 0
+    for i in range(1, len(text.splitlines()) + 2):
+        if i in lines:
+            start, run = (i, 1) if run == 0 else (start, run + 1)
+        elif run:
+            blocks.append((start, run))
+            run = 0
+    return blocks
+
+
+@pytest.mark.parametrize("pkg", LAYERS)
+def test_comments_are_short(pkg):
+    long = [f"{f.relative_to(ROOT)}:{s} ({n} lines)" for f in sorted((ROOT / pkg).rglob("*.py"))
+            for s, n in _comment_blocks(f) if n > MAX_COMMENT_BLOCK]
+    assert long == []
+
+
+EXTERNAL = re.compile(r"\bspec(?:ification)?\s*(?:0\d|§)|\bspec §|https?://", re.I)
+
+
+@pytest.mark.parametrize("pkg", LAYERS + ("benchmarks", "tests"))
+def test_code_cites_only_documents_of_the_repository(pkg):
+    bad = [f"{f.relative_to(ROOT)}:{k}" for f in sorted((ROOT / pkg).rglob("*.py")) if f != Path(__file__)
+           for k, line in enumerate(f.read_text(encoding="utf-8").splitlines(), 1) if EXTERNAL.search(line)]
+    assert bad == []
+
+
+def test_cited_docs_exist():
+    cited = set()
+    for pkg in LAYERS + ("benchmarks",):
+        for f in (ROOT / pkg).rglob("*.py"):
+            cited |= set(re.findall(r"docs/[\w./-]+\.md", f.read_text(encoding="utf-8")))
+    missing = sorted(c for c in cited if not (ROOT / c).is_file())
+    assert missing == []
