@@ -22,6 +22,7 @@ from analytic.dynamics import linearised_collapse, simulate
 from specimens.constants import G
 from analytic.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.mechanism import Mechanism
+from analytic.search import midpoint, search
 from specimens.errors import ArchdemInputError
 
 INPUTS = ("sine", "sine0", "A", "B")
@@ -116,17 +117,12 @@ def domain_column(mech: Mechanism, kind: str, x: float, a_min: float, a_max: flo
     for k in range(n_scan - 1):
         if cls[k] == cls[k + 1]:
             continue
-        lo, hi, clo, chi = float(amps[k]), float(amps[k + 1]), cls[k], cls[k + 1]
+        clo = cls[k]
         # bisect; a third class found inside splits the bracket (keep the lower change)
-        while hi - lo > tol * lo:
-            mid = math.sqrt(lo * hi)
-            cm = _classify(mech, kind, mid, x, restitution)
-            runs += 1
-            if cm == clo:
-                lo = mid
-            else:
-                hi, chi = mid, cm
-        edges.append((math.sqrt(lo * hi), clo, chi))
+        res = search(lambda a: _classify(mech, kind, a, x, restitution), float(amps[k]), float(amps[k + 1]), tol,
+                     rule="width/lo", geometric=True, is_upper=lambda c: c != clo, lo_run=clo, hi_run=cls[k + 1])
+        runs += res.runs
+        edges.append((midpoint(res.lo, res.hi, geometric=True), clo, res.hi_run))
     bands = []
     start = float(amps[0])
     for a, clo, _ in edges:
@@ -154,11 +150,8 @@ def _linearised_threshold(mech: Mechanism, kind: str, x: float, a_min: float, a_
         return None
     if f(a_min):
         return a_min
-    lo, hi = a_min, a_max
-    while hi - lo > tol * lo:
-        mid = math.sqrt(lo * hi)
-        lo, hi = (lo, mid) if f(mid) else (mid, hi)
-    return math.sqrt(lo * hi)
+    res = search(f, a_min, a_max, tol, rule="width/lo", geometric=True, lo_run=False, hi_run=True)
+    return midpoint(res.lo, res.hi, geometric=True)
 
 
 def warm_up(mech: Mechanism, restitution: float | None = None, depth: int = 8) -> None:

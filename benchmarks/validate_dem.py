@@ -66,47 +66,36 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     """One specimen and configuration; ``job[4]``: TiltProtocol fields that differ from the defaults;
     ``job[5]``: Settings fields that differ from the defaults (other than friction and engine)."""
     sid, config, with_drift, engine, proto_kw, settings_kw = job
-    from analytic.limit_discrete import solve_lp
     from dem.core.model import from_assembly
     from dem.experiments.tilt import TiltProtocol, tilt
-    from specimens.constants import NO_SLIDING_MU
+    from dem.experiments.tilt_check import check_result, reference_lp
+    from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
     from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
     asm = discretise(get_specimen(sid).arch, config=config)
     m = from_assembly(asm, name=sid)
-    lp = solve_lp(asm, float("inf"), float("inf"))
-    lp_ref = solve_lp(asm, 0.577, 1.0)
+    lp = reference_lp(asm, NO_SLIDING_MU, NO_SLIDING_MU)  # exact with no sliding: a collapse below it is spurious
+    lp_ref = reference_lp(asm, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)  # associative: no bound
     t0 = time.perf_counter()
-
     proto = TiltProtocol(**proto_kw)
-    # every held level: (lambda / LP, collapsed, time into the hold at collapse [s], time into the hold
-    # at which it was ended at rest [s]; None if not), the LP being the
-    # no-sliding one for the no-sliding test (the exact threshold: a collapse below it is spurious) and
-    # the associative one at the reference friction for the reference test (an upper bound only)
-    import dem.experiments.tilt as protocols
-
-    hold_level = protocols.hold_level
 
     def logged_tilt(settings, lp_lam: float) -> tuple:
+        """The tilt test and every held level: (lambda / LP, collapsed, time into the hold at collapse [s],
+        time into the hold at which it was ended at rest [s]; None if not)."""
         levels = []
 
-        def logged(model, settings, p, lam):
-            r = hold_level(model, settings, p, lam)
-            levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - p.ramp_time) if r.collapsed else None,
-                           None if math.isnan(r.t_rest) else float(r.t_rest - p.ramp_time)))
-            return r
+        def log(lam, r):
+            levels.append((lam / lp_lam, bool(r.collapsed), float(r.t_collapse - proto.ramp_time) if r.collapsed else None,
+                           None if math.isnan(r.t_rest) else float(r.t_rest - proto.ramp_time)))
 
-        protocols.hold_level = logged
-        try:
-            return tilt(m, settings, proto, label=sid, assembly=asm), levels
-        finally:
-            protocols.hold_level = hold_level
+        return tilt(m, settings, proto, label=sid, assembly=asm, on_level=log), levels
 
     ns, levels = logged_tilt(Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, engine=engine, **settings_kw), lp.lam)
     ref, levels_ref = logged_tilt(Settings(engine=engine, **settings_kw), lp_ref.lam)
-    hinges = [(j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide")]
+    row = check_result(ns, asm, lp)
+    hinges = list(row.hinges)
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
     drift = rest_drift(sid, config, engine=engine, **settings_kw) if with_drift else float("nan")
     return {
@@ -115,7 +104,7 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
         "probe_ends": proto.probe_ends, "settings": ns.settings.to_dict(),
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
         "dem_lambda_nosliding": ns.lam, "levels_nosliding": levels, "bracket_nosliding": list(ns.bracket), "n_sims_nosliding": ns.n_sims,
-        "rel_err": (ns.lam - lp.lam) / lp.lam, "dem_hinges": hinges, "hinges_match": ok,
+        "rel_err": row.rel_err, "dem_hinges": hinges, "hinges_match": ok,
         "dem_hinges_lambda": lam_h, "mode_nosliding": ns.mode,
         "dem_lambda_ref": ref.lam, "mode_ref": ref.mode, "lp_lambda_ref_associative": lp_ref.lam,
         "ref_joints": [(j.joint, j.state) for j in ref.joints if j.state != "closed"],

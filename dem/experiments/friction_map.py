@@ -51,6 +51,7 @@ from typing import Sequence
 
 import numpy as np
 
+from analytic.search import midpoint, search, wide
 from dem.studies.cases import DEM_CASE, MAP_PROTOCOL, MAP_TILT_TOL, RC_REF, _scaled_protocol, make_case
 from specimens.blocks import DEFAULT_VOUSSOIRS
 from specimens.constants import REFERENCE_MU_BASE
@@ -154,9 +155,9 @@ def threshold_bracket(mus: Sequence[float], modes: Sequence[str]) -> Threshold:
 
 def bisection_point(th: Threshold, min_width: float = 0.0) -> float | None:
     """The next friction to simulate inside the bracket (its midpoint, rounded to 1e-9), or None."""
-    if th.status != "bracketed" or th.width <= min_width:
+    if th.status != "bracketed" or not wide(th.lo, th.hi, min_width, "width"):
         return None
-    mid = round(0.5 * (th.lo + th.hi), 9)
+    mid = round(midpoint(th.lo, th.hi), 9)
     return mid if th.lo < mid < th.hi else None
 
 
@@ -200,13 +201,9 @@ def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) ->
 
     if not math.isfinite(lam_ns) or not full(mu_max):
         return None
-    lo, hi = 0.0, mu_max
     if full(1e-6):
         return 0.0
-    while hi - lo > LP_MU_TOL:
-        mid = 0.5 * (lo + hi)
-        lo, hi = (lo, mid) if full(mid) else (mid, hi)
-    return hi
+    return search(full, 0.0, mu_max, LP_MU_TOL, rule="width", lo_run=False, hi_run=True).hi
 
 
 def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequence[float],

@@ -39,6 +39,7 @@ from analytic.inputs import GroundMotion, SinePulse
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, collapses
+from analytic.search import Bracket, search
 from specimens.errors import ArchdemInputError
 
 
@@ -157,7 +158,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
     n = len(grid)
     scan: list[Outcome | None] = [None] * n
     bis: list[Outcome] = []
-    bracket: tuple | None = None  # (lo, hi, run at hi) of the bisection, once the scan below it is known
+    bracket: Bracket | None = None  # the bisection's, once the scan below it is known
 
     def next_mid() -> float | None:
         nonlocal bracket
@@ -165,23 +166,23 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
             k = _lowest_bracket(scan)
             if k is None or k <= 0:
                 return None
-            bracket = (scan[k - 1].amplitude_g, scan[k].amplitude_g, scan[k])
-        lo, hi, _ = bracket
-        if hi / lo - 1 > tol and n + len(bis) < max_sims:
-            return math.sqrt(lo * hi)
+            bracket = Bracket(scan[k - 1].amplitude_g, scan[k].amplitude_g, tol, "ratio", True, scan[k - 1], scan[k])
+        if bracket.wide() and n + len(bis) < max_sims:
+            return bracket.mid()
         return None
 
     def take(r: Outcome) -> None:
-        nonlocal bracket
         bis.append(r)
-        lo, hi, hi_r = bracket
-        bracket = (lo, r.amplitude_g, r) if r.collapsed else (r.amplitude_g, hi, hi_r)
+        bracket.take(r.amplitude_g, r.collapsed, r)
+
+    def result():
+        return list(scan), bis, None if bracket is None else (bracket.lo, bracket.hi, bracket.hi_run)
 
     if workers <= 1:
         scan = [_run_one(job(a)) for a in grid]
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
-        return scan, bis, bracket
+        return result()
     with ProcessPoolExecutor(max_workers=min(workers, n)) as ex:
         running: dict = {}  # future -> scan index, or None for the bisection's run
         nxt = 0
@@ -196,7 +197,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
                 else:
                     break
             if not running:
-                return list(scan), bis, bracket
+                return result()
             done, _ = wait(running, return_when=FIRST_COMPLETED)
             for f in done:
                 i = running.pop(f)
@@ -269,28 +270,18 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
         lo, hi, hi_r = bracket
         return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs),
                                scan_ratio, tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
-    # the lowest scanned amplitude collapses: step down until something survives, then bisect
-    hi_r, lo_r = scan[0], None
-    a = hi_r.amplitude_g
-    for _ in range(6):
-        a /= scan_ratio
+    # the lowest scanned amplitude collapses: step down (at most 6 times) until something survives, then bisect
+    def run(a: float) -> Outcome:
         r = _run_one(job(a))
         runs.append(r)
-        if not r.collapsed:
-            lo_r = r
-            break
-        hi_r = r
-    if lo_r is None:
-        raise ArchdemInputError(f"collapse at every amplitude down to {a:.4g} g; lower --a-min")
-    lo, hi = lo_r.amplitude_g, hi_r.amplitude_g
-    while hi / lo - 1 > tol and len(runs) < max_sims:
-        mid = math.sqrt(lo * hi)
-        r = _run_one(job(mid))
-        runs.append(r)
-        if r.collapsed:
-            hi, hi_r = mid, r
-        else:
-            lo = mid
+        return r
+
+    a0 = scan[0].amplitude_g
+    res = search(run, a0 / scan_ratio, a0, tol, rule="ratio", geometric=True, is_upper=lambda r: r.collapsed,
+                 hi_run=scan[0], down=lambda a: a / scan_ratio, ends="first", max_runs=max_sims - len(scan), max_down=6)
+    if res.status == "no_lower":
+        raise ArchdemInputError(f"collapse at every amplitude down to {res.hi:.4g} g; lower --a-min")
+    lo, hi, hi_r = res.lo, res.hi, res.hi_run
     return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs), scan_ratio,
                            tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
 

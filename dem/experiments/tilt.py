@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field, replace
+from typing import Callable
 
 
 from dem.core import detect
@@ -33,6 +34,7 @@ from dem.core.loads import TiltHold, TiltRamp, TiltStairs
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
+from analytic.search import search
 from specimens.errors import ArchdemInputError
 
 
@@ -171,13 +173,14 @@ def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float
 
 
 def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None = None,
-         label: str | None = None, assembly=None, config: str = "glued") -> TiltResult:
+         label: str | None = None, assembly=None, config: str = "glued",
+         on_level: Callable[[float, SimResult], None] | None = None) -> TiltResult:
     """Tilt test of ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model: see
     :func:`dem.core.model.as_model`, which cuts an arch in the ``config`` configuration); see the
     module docstring. ``assembly``: the blocks the model was built from (default: the model's own),
     needed by a hold protocol with ``start="lp"`` and used by ``start="auto"`` (the default; the
     ramp scan without it). The result's ``protocol`` holds the resolved start and, with the LP
-    start, the estimate as ``guess``."""
+    start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold)."""
     model = as_model(target, config=config)
     assembly = model.assembly if assembly is None else assembly
     settings = settings or Settings()
@@ -206,59 +209,24 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
             est = proto.scan_rate * scan.t_collapse
             hi, lo = est, 0.85 * est
             up, down = 1.1, 0.85
-        # collapse / stable: the simulated upper / lower end of the bracket (None: not simulated yet)
 
         def run(lam: float) -> SimResult:
-            nonlocal n
             r = hold_level(model, settings, proto, lam)
-            n += 1
             levels.append((lam, r.collapsed))
+            if on_level is not None:
+                on_level(lam, r)
             return r
 
-        def probe_hi() -> bool:
-            """Simulate the unsimulated upper end; False: it held, and the bracket moved up."""
-            nonlocal lo, hi, collapse, stable
-            r = run(hi)
-            if r.collapsed:
-                collapse = r
-                return True
-            lo, stable = hi, r
-            hi *= up
-            if hi > proto.lam_max or n >= proto.max_sims:
-                raise ArchdemInputError(f"no collapse up to lambda = {hi:g} under held levels")
-            return False
-
-        def probe_lo() -> bool:
-            """Simulate the unsimulated lower end; False: it collapsed, and the bracket moved down."""
-            nonlocal lo, hi, collapse, stable
-            r = run(lo)
-            if not r.collapsed:
-                stable = r
-                return True
-            hi, collapse = lo, r
-            lo *= down
-            return False
-
-        if proto.probe_ends == "first":  # both ends before bisecting (the former way)
-            while not probe_hi():
-                pass
-            while stable is None and not probe_lo() and n < proto.max_sims:
-                pass
-        while True:
-            while (hi - lo) > proto.tol * hi and n < proto.max_sims:
-                mid = 0.5 * (lo + hi)
-                r = run(mid)
-                if r.collapsed:
-                    hi, collapse = mid, r
-                else:
-                    lo, stable = mid, r
-            # "last": an end of the first bracket is an assumption until the bisection ends on it
-            if collapse is None and not probe_hi():
-                continue
-            if stable is None and n < proto.max_sims and not probe_lo():
-                continue
-            break
-        lam, bracket = hi, (lo, hi)
+        res = search(run, lo, hi, proto.tol, rule="width/hi", is_upper=lambda r: r.collapsed,
+                     up=lambda x: x * up, down=lambda x: x * down, ends=proto.probe_ends, limit=proto.lam_max,
+                     max_runs=proto.max_sims - n)
+        n += res.runs
+        if res.status == "no_upper":
+            raise ArchdemInputError(f"no collapse up to lambda = {res.hi:g} under held levels")
+        if not res.bracketed:
+            raise ArchdemInputError(f"no bracket of a held and a collapsing level within {proto.max_sims} simulations "
+                                    f"(levels {', '.join(f'{x:.4g}' for x, _ in levels)}); raise max_sims")
+        lam, bracket, collapse, stable = res.hi, (res.lo, res.hi), res.hi_run, res.lo_run
     elif proto.kind == "staircase":
         load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
         period = proto.stair_hold + load.rise

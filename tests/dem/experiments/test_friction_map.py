@@ -1,6 +1,7 @@
 """Friction map: threshold bracketing, bisection rounds, map-level resume, analytic curves, CLI."""
 from __future__ import annotations
 
+import functools
 import json
 import math
 from pathlib import Path
@@ -225,6 +226,7 @@ def test_cli_json_schema(tmp_path, capsys, monkeypatch):
     # the CLI with the synthetic case function (the DEM path is covered by the real map test)
     real = fm.catalogue_map
 
+    @functools.wraps(real)  # the CLI reads its defaults from the signature
     def fake(*a, **kw):
         return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
 

@@ -245,3 +245,37 @@ def test_kinetic_energy_closed_form():
     w = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0]])
     truth = 0.5 * 2.0 * 1.0 + 0.5 * 3.0 * 4.0 + 0.5 * w[0] @ R[0] @ inertia[0] @ R[0].T @ w[0] + 0.5 * 0.5
     assert _kinetic_energy(m, inertia, v, w, R) == pytest.approx(truth, rel=1e-14)
+
+
+def test_hold_search_out_of_simulations_is_an_error_not_a_lambda(monkeypatch):
+    # the truth far below the first estimate (0.3 x it): stepping down 5 % a simulation cannot reach it
+    # in max_sims; the tilt test must say so, not return a bracket whose lower end was never simulated
+    from types import SimpleNamespace
+
+    import dem.experiments.tilt as pr
+    from dem.core.model import single_block
+    from specimens.errors import ArchdemInputError
+
+    guess, held = 0.5, []
+
+    def fake_hold(model, settings, proto, lam):
+        held.append(lam)
+        return SimpleNamespace(collapsed=lam > 0.3 * guess, mode="rocking", joints=[])
+
+    monkeypatch.setattr(pr, "hold_level", fake_hold)
+    with pytest.raises(ArchdemInputError, match="max_sims"):
+        tilt(single_block(0.1, 0.4), Settings(), TiltProtocol(guess=guess))
+    assert len(held) == TiltProtocol().max_sims
+
+
+def test_on_level_hook_sees_every_held_level(monkeypatch):
+    from types import SimpleNamespace
+
+    import dem.experiments.tilt as pr
+    from dem.core.model import single_block
+
+    monkeypatch.setattr(pr, "hold_level", lambda model, settings, proto, lam:
+                        SimpleNamespace(collapsed=lam > 0.25, mode="rocking", joints=[]))
+    seen = []
+    r = tilt(single_block(0.1, 0.4), Settings(), TiltProtocol(guess=0.25), on_level=lambda lam, sim: seen.append((lam, sim.collapsed)))
+    assert seen == r.levels and r.bracket[0] <= 0.25 < r.bracket[1]
