@@ -11,7 +11,12 @@ from analytic.dynamics import Response, simulate
 from analytic.inputs import GroundMotion, PulseA, PulseB, SampledMotion, SinePulse
 from analytic.limit_continuous import continuous_collapse
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from analytic.linkage import arch_four_bar, arch_two_bar, minimised_four_bar, minimised_layout
+from analytic.linkage import (
+    arch_four_bar,
+    arch_two_bar,
+    minimised_four_bar,
+    minimised_layout,
+)
 from analytic.records import ground_motion, read_record
 from analytic.rocking_block import RockingBlock
 from analytic.summary import analyse

@@ -19,10 +19,10 @@ from typing import Sequence
 import numpy as np
 
 from analytic.dynamics import linearised_collapse, simulate
-from specimens.constants import G
 from analytic.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.mechanism import Mechanism
 from analytic.search import midpoint, search
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 INPUTS = ("sine", "sine0", "A", "B")

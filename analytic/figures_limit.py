@@ -105,7 +105,6 @@ def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True, rows:
     """Write all limit-analysis figures to ``out_dir``; return the files written. ``rows``: the
     catalogue's :func:`analytic.summary.multiplier_series`, if the caller has computed it."""
     from analytic.summary import multiplier_series
-
     from specimens.catalogue import CATALOGUE, full_scale_set
 
     out = Path(out_dir)

@@ -15,7 +15,6 @@ import numpy as np
 from specimens.errors import ArchdemInputError
 
 
-
 def _check_positive(name: str, v: float) -> None:
     if not (isinstance(v, (int, float, np.floating, np.integer)) and math.isfinite(v) and v > 0):
         raise ArchdemInputError(f"{name} must be a positive finite number, got {v!r}")

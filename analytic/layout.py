@@ -13,9 +13,8 @@ from typing import Literal
 
 import numpy as np
 
-from specimens.geometry import PointedArch
+from specimens.geometry import PointedArch, ring_segment_properties
 from specimens.sections import SectionProperties
-from specimens.geometry import ring_segment_properties
 
 Face = Literal["intrados", "extrados"]
 

@@ -30,9 +30,9 @@ from typing import Sequence
 import numpy as np
 from scipy.optimize import linprog
 
-from specimens.constants import G
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock
 from specimens.blocks import Assembly
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 FACES = ("intrados", "extrados")

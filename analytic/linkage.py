@@ -27,9 +27,9 @@ from typing import Sequence
 import numpy as np
 from scipy.optimize import brentq
 
-from specimens.constants import G
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock
 from analytic.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import region_properties
@@ -45,7 +45,9 @@ def _cross(ax: float, ay: float, bx: float, by: float) -> float:
 # ring material (exact region properties between cuts of the arch coordinate u)
 # ---------------------------------------------------------------------------------------------
 def _ring(arch: PointedArch):
-    from analytic.limit_continuous import RingCuts  # the cut family of the continuous analysis
+    from analytic.limit_continuous import (
+        RingCuts,  # the cut family of the continuous analysis
+    )
 
     return RingCuts(arch)
 

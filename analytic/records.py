@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from specimens.constants import G
 from analytic.inputs import GroundMotion, SampledMotion, SinePulse
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 FORMATS = ("at2", "smc", "esm", "csv")

@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from specimens.constants import G
 from analytic.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 

@@ -30,9 +30,8 @@ import numpy as np
 
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
-from specimens.geometry import PointedArch
+from specimens.geometry import PointedArch, ring_half_boundary
 from specimens.sections import mirror_edges, region_properties
-from specimens.geometry import ring_half_boundary
 
 
 @dataclass(frozen=True)

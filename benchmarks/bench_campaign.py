@@ -19,12 +19,12 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from specimens.io import atomic_path
     from dem.campaign.context import CampaignContext
-    from dem.campaign.runner import all_steps, run_campaign
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
+    from dem.campaign.runner import all_steps, run_campaign
     from dem.core.provenance import provenance
     from specimens.catalogue import select_specimens
+    from specimens.io import atomic_path
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="the quick campaign of make demo")

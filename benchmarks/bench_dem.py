@@ -17,8 +17,8 @@ OUT = Path(__file__).resolve().parent / "results"
 
 def _tilt(sid: str) -> dict:
     from dem.core.model import from_assembly
-    from dem.experiments.tilt import tilt
     from dem.core.settings import Settings
+    from dem.experiments.tilt import tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -31,8 +31,8 @@ def _tilt(sid: str) -> dict:
 
 def per_simulated_second(model, seconds: float = 1.0) -> float:
     from dem.core.loads import Rest
-    from dem.core.simulate import simulate
     from dem.core.settings import Settings
+    from dem.core.simulate import simulate
 
     r = simulate(model, Settings(), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
     return r.wall_s / seconds

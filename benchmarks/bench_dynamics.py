@@ -12,11 +12,11 @@ import statistics
 import time
 
 import numpy as np
+from _common import report
 
 from analytic.domain import failure_domain, make_input
 from analytic.dynamics import simulate
 from analytic.linkage import minimised_four_bar
-from _common import report
 from specimens.catalogue import get_specimen
 
 

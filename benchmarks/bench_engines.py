@@ -79,9 +79,9 @@ def _step_time(engine: str, copies: int, seconds: float) -> dict:
 
 
 def _tilt_time(engine: str, sid: str) -> dict:
-    from dem.experiments.compare_engines import engine_tilt
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
+    from dem.experiments.compare_engines import engine_tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -114,10 +114,10 @@ def _slope(x, y) -> float:
 
 
 def main() -> None:
-    from specimens.io import atomic_path
     from dem.core.provenance import package_version
     from dem.core.settings import Settings
     from specimens.catalogue import select_specimens
+    from specimens.io import atomic_path
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeats", type=int, default=3)

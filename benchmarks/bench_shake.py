@@ -19,13 +19,13 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from specimens.constants import G
     from analytic.inputs import SinePulse
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.shake import ShakeProtocol, shake
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
+    from specimens.constants import G
 
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeats", type=int, default=3)

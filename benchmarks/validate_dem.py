@@ -39,8 +39,8 @@ def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybul
     """Largest displacement of any body point after ``seconds`` at rest [m]."""
     from dem.core.loads import Rest
     from dem.core.model import from_assembly
-    from dem.core.simulate import simulate
     from dem.core.settings import Settings
+    from dem.core.simulate import simulate
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -67,12 +67,12 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     ``job[5]``: Settings fields that differ from the defaults (other than friction and engine)."""
     sid, config, with_drift, engine, proto_kw, settings_kw = job
     from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from dem.experiments.tilt import TiltProtocol, tilt
     from dem.experiments.tilt_check import check_result, reference_lp
-    from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-    from dem.core.settings import Settings
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
+    from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     asm = discretise(get_specimen(sid).arch, config=config)
     m = from_assembly(asm, name=sid)
@@ -117,11 +117,11 @@ def sensitivity(job: tuple[str, str]) -> dict:
     """No-sliding lambda at the defaults, with dt halved, and with the hold ramp twice as slow."""
     sid, variant = job
     from dem.core.model import from_assembly
-    from dem.experiments.tilt import TiltProtocol, tilt
-    from specimens.constants import NO_SLIDING_MU
     from dem.core.settings import Settings
+    from dem.experiments.tilt import TiltProtocol, tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
+    from specimens.constants import NO_SLIDING_MU
 
     asm = discretise(get_specimen(sid).arch, config="glued")
     m = from_assembly(asm, name=sid)

@@ -12,7 +12,12 @@ from dem.core.simulate import SimResult, simulate
 from dem.experiments.domain import dem_failure_domain
 from dem.experiments.friction_map import catalogue_map
 from dem.experiments.shake import ShakeProtocol, ShakeResult, shake
-from dem.experiments.thresholds import ThresholdResult, failure_domain, static_onset, threshold
+from dem.experiments.thresholds import (
+    ThresholdResult,
+    failure_domain,
+    static_onset,
+    threshold,
+)
 from dem.experiments.tilt import TiltProtocol, TiltResult, tilt
 from dem.formats.shake import load_shake, save_shake
 from dem.formats.tilt import load_result, save_result

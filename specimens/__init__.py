@@ -1,6 +1,12 @@
 """Arch geometry: the pointed arch, its voussoirs, meshes and the specimen catalogue."""
 from specimens.blocks import Assembly, Block, Body, Joint, discretise, joint_angles
-from specimens.catalogue import CATALOGUE, SPECIMEN_IDS, Specimen, full_scale_set, get_specimen
+from specimens.catalogue import (
+    CATALOGUE,
+    SPECIMEN_IDS,
+    Specimen,
+    full_scale_set,
+    get_specimen,
+)
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 

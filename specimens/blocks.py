@@ -28,7 +28,12 @@ import numpy as np
 
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
-from specimens.sections import SectionProperties, is_convex, polygon_properties, signed_area
+from specimens.sections import (
+    SectionProperties,
+    is_convex,
+    polygon_properties,
+    signed_area,
+)
 
 Shape = Literal["linearised", "curved"]
 Config = Literal["glued", "free"]

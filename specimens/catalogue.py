@@ -100,5 +100,4 @@ def catalogue_rows() -> list[dict]:
     return rows
 
 
-
 JSON_KEYS = ("id", "Ri", "Re", "e", "t", "Sh", "Sd", "span", "rise", "mass", "n_blocks")

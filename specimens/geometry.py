@@ -16,7 +16,15 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from specimens.errors import ArchdemInputError
-from specimens.sections import Arc, Edge, SectionProperties, Segment, combine, mirror_edges, region_properties
+from specimens.sections import (
+    Arc,
+    Edge,
+    SectionProperties,
+    Segment,
+    combine,
+    mirror_edges,
+    region_properties,
+)
 
 
 def _finite_positive(name: str, value: float, allow_zero: bool = False) -> None:
@@ -214,7 +222,6 @@ def ring_half_boundary(arch: "PointedArch", psi_a: float, psi_b: float | None) -
         Arc(c, arch.Re, psi_b, psi_a),
         Segment(E(psi_a), I(psi_a)),
     ]
-
 
 
 def ring_segment_properties(arch: "PointedArch", cut_a: tuple[int, float], cut_b: tuple[int, float]) -> SectionProperties:

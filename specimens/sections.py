@@ -139,5 +139,3 @@ def combine(parts: Sequence[SectionProperties]) -> SectionProperties:
     Iyy = sum(p.Iyy + p.area * (p.centroid[0] - c[0]) ** 2 for p in parts)
     Ixy = sum(p.Ixy + p.area * (p.centroid[0] - c[0]) * (p.centroid[1] - c[1]) for p in parts)
     return SectionProperties(float(A), np.asarray(c, dtype=float), float(Ixx), float(Iyy), float(Ixy))
-
-

@@ -164,3 +164,18 @@ def test_cited_docs_exist():
             cited |= set(re.findall(r"docs/[\w./-]+\.md", f.read_text(encoding="utf-8")))
     missing = sorted(c for c in cited if not (ROOT / c).is_file())
     assert missing == []
+
+
+def test_public_names_exist():
+    import importlib
+    import pkgutil
+
+    missing = []
+    for pkg in LAYERS:
+        top = importlib.import_module(pkg)
+        names = [pkg] + [m.name for m in pkgutil.walk_packages(top.__path__, pkg + ".") if not m.name.endswith("__main__")]
+        for name in names:
+            mod = importlib.import_module(name)
+            missing += [f"{name}.{a}" for a in getattr(mod, "__all__", ()) if not hasattr(mod, a)]
+    assert missing == []
+    assert {"tilt", "shake", "threshold", "ground_motion", "Settings"} <= set(importlib.import_module("dem").__all__)

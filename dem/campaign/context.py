@@ -7,8 +7,6 @@ from pathlib import Path
 from typing import Callable
 
 
-
-
 @dataclass
 class CampaignContext:
     """What every step gets: output folder, options, and the log of finished steps."""
@@ -23,8 +21,7 @@ class CampaignContext:
     results: dict = field(default_factory=dict)
 
 
-
-def _write_csv(path: Path, rows: list[dict]) -> None:
+def write_csv(path: Path, rows: list[dict]) -> None:
     import csv
 
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -34,22 +31,18 @@ def _write_csv(path: Path, rows: list[dict]) -> None:
         w.writerows(rows)
 
 
-
-def _pct(a: float, b: float) -> float:
+def pct(a: float, b: float) -> float:
     return 100.0 * (a - b) / b
 
 
-
-def _write_json_atomic(path: Path, obj: dict) -> None:
+def write_json_atomic(path: Path, obj: dict) -> None:
     from specimens.io import atomic_path
 
     with atomic_path(path, overwrite=True) as tmp:
         tmp.write_text(json.dumps(obj, indent=2, default=str))
 
 
-def _studies(ctx: CampaignContext) -> Path:
+def studies_dir(ctx: CampaignContext) -> Path:
     p = ctx.out / "studies"
     p.mkdir(exist_ok=True)
     return p
-
-

@@ -3,11 +3,10 @@ machine's speed reading (:func:`machine_speed`) that scales them (docs/timings.m
 from __future__ import annotations
 
 from dem.campaign.context import CampaignContext
-from dem.campaign.step_map import _map_plan
-from dem.campaign.step_record import _record_plan
-from dem.campaign.step_shake import _shake_plan
-from dem.campaign.step_tilt import _tilt_frictions
-
+from dem.campaign.step_map import map_plan
+from dem.campaign.step_record import record_plan
+from dem.campaign.step_shake import shake_plan
+from dem.campaign.step_tilt import tilt_frictions
 
 # Core-seconds of one unit of work of each simulator step (PyBullet, 15 bodies, the defaults) on a
 # machine whose machine_speed reads REFERENCE_SPEED, from timed campaign runs (docs/timings.md#4-unit-costs)
@@ -65,13 +64,13 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     from dem.experiments.friction_map import parse_mu_grid
 
     cores = max(1, ctx.workers or os.cpu_count() or 1)
-    map_specs, mus, refine = _map_plan(ctx)
-    shake_specs, freqs = _shake_plan(ctx)
+    map_specs, mus, refine = map_plan(ctx)
+    shake_specs, freqs = shake_plan(ctx)
     units = {
-        "tilt": (len(ctx.specimens) * len(_tilt_frictions(ctx)), "tilt tests"),
+        "tilt": (len(ctx.specimens) * len(tilt_frictions(ctx)), "tilt tests"),
         "map": (len(map_specs) * (len(parse_mu_grid(mus)) + refine), "map tilt cases"),
         "shake": (len(shake_specs) * len(freqs), "sine-pulse thresholds"),
-        "record": (len(_record_plan(ctx)), "record thresholds"),
+        "record": (len(record_plan(ctx)), "record thresholds"),
     }
     ref = REFERENCE_SPEED.get(ctx.engine)
     scale = speed / ref if speed is not None and ref else 1.0
@@ -82,5 +81,3 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
         unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(ctx.engine, 1.0) * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
     return out
-
-

@@ -13,7 +13,7 @@ import time
 from pathlib import Path
 from typing import Callable
 
-from dem.campaign.context import CampaignContext, _write_json_atomic
+from dem.campaign.context import CampaignContext, write_json_atomic
 from dem.campaign.step_analytic import step_analytic
 from dem.campaign.step_catalogue import step_catalogue
 from dem.campaign.step_map import step_map
@@ -21,7 +21,6 @@ from dem.campaign.step_record import step_record
 from dem.campaign.step_shake import step_shake
 from dem.campaign.step_tilt import step_tilt
 from specimens.errors import ArchdemInputError
-
 
 StepFunc = Callable[[CampaignContext, Path], dict]
 
@@ -79,13 +78,11 @@ def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
         tmp.rename(final)
         ctx.results[name] = outputs
         manifest["steps"][name] = {"outputs": outputs, "wall_s": wall}
-        _write_json_atomic(manifest_path, manifest)
+        write_json_atomic(manifest_path, manifest)
         ctx.log(f"[{name}] done in {wall:.1f} s")
     from dem.campaign.report import build_report
 
     rep = build_report(out, manifest, {k: v[1] for k, v in STEPS.items()})
     manifest["report"] = rep["report"]
-    _write_json_atomic(manifest_path, manifest)
+    write_json_atomic(manifest_path, manifest)
     return manifest
-
-

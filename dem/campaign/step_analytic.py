@@ -3,8 +3,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-
-from dem.campaign.context import CampaignContext, _pct, _write_csv
+from dem.campaign.context import CampaignContext, pct, write_csv
 
 
 def step_analytic(ctx: CampaignContext, d: Path) -> dict:
@@ -44,7 +43,7 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
                                               for h in a["hinges_continuous"]),
             "lp_sliding_joints": " ".join(sliding),
         })
-    _write_csv(d / "analytic.csv", rows)
+    write_csv(d / "analytic.csv", rows)
     figs = catalogue_figures(d / "figures", full_scale=True, rows=series)
     keep = [f for f in figs if "mechanism" not in f.name] + [f for f in figs if "mechanism" in f.name][:2]
     figures = [{"path": f"analytic/figures/{f.name}", "caption": f.stem.replace("_", " ")} for f in keep]
@@ -67,7 +66,7 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
                         f" (of {', '.join(f'{x:g}' for x in sorted(by_sh))}).")
     base = sum(1 for r in rows if any(h.split(':')[0] in ('L0', 'R0') for h in r["hinges_discrete"].split()))
     findings.append(f"The discrete mechanism has a hinge at a springing (base joint) in {base} of {len(rows)} specimens.")
-    red = np.array([_pct(r["lambda_continuous_80pct"], r["lambda_continuous"]) for r in rows])
+    red = np.array([pct(r["lambda_continuous_80pct"], r["lambda_continuous"]) for r in rows])
     findings.append(f"An 80 % effective thickness lowers the continuous lambda by {-red.max():.0f}-{-red.min():.0f} %.")
     slid = [r["id"] for r in rows if r["lp_sliding_joints"]]
     findings.append(f"At the reference friction ({REFERENCE_MU_JOINT}/{REFERENCE_MU_BASE}) the associative LP has sliding joints in "

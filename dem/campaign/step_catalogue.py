@@ -4,20 +4,19 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-
-from dem.campaign.context import CampaignContext, _write_csv
+from dem.campaign.context import CampaignContext, write_csv
 
 
 def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
     """Catalogue table (CSV, JSON), a drawing and the meshes of every specimen."""
-    from specimens.catalogue import JSON_KEYS, catalogue_rows
     from specimens.blocks import discretise
+    from specimens.catalogue import JSON_KEYS, catalogue_rows
     from specimens.drawing import save_drawing
     from specimens.mesh import export_meshes
 
     ids = {s.id for s in ctx.specimens}
     rows = [r for r in catalogue_rows() if r["id"] in ids]
-    _write_csv(d / "catalogue.csv", rows)
+    write_csv(d / "catalogue.csv", rows)
     (d / "catalogue.json").write_text(json.dumps([{k: r[k] for k in JSON_KEYS} for r in rows], indent=2))
     figures = []
     for s in ctx.specimens:

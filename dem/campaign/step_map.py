@@ -5,20 +5,17 @@ from pathlib import Path
 
 import numpy as np
 
-from dem.campaign.context import CampaignContext, _studies, _write_csv
+from dem.campaign.context import CampaignContext, studies_dir, write_csv
 from specimens.constants import REFERENCE_MU_BASE
-
 
 QUICK_MAP = ("Sh02-Sd015", "Sh1-Sd025")  # quick map: the thin/round-ish and the thick/sharp end
 
 
-
-def _map_plan(ctx: CampaignContext) -> tuple[list, str, int]:
+def map_plan(ctx: CampaignContext) -> tuple[list, str, int]:
     """Specimens, friction grid and bisection rounds of the map step."""
     if ctx.quick:
         return [s for s in ctx.specimens if s.id in QUICK_MAP] or ctx.specimens[:2], "0.3,0.6,0.9,1.2", 1
     return ctx.specimens, "0.3:1.5:0.1", 3
-
 
 
 # ------------------------------------------------------------------------------ friction map
@@ -26,13 +23,13 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
     """Rocking/sliding friction threshold of every specimen (coarse grid when quick)."""
     from dem.experiments.friction_map import catalogue_map
 
-    specs, mus, refine = _map_plan(ctx)
-    res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, _studies(ctx) / "map.h5",
-                        workers=ctx.workers, resume=(_studies(ctx) / "map.h5").exists(), progress=True,
+    specs, mus, refine = map_plan(ctx)
+    res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, studies_dir(ctx) / "map.h5",
+                        workers=ctx.workers, resume=(studies_dir(ctx) / "map.h5").exists(), progress=True,
                         refine=refine,
                         settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None)
-    _write_csv(d / "map.csv", res.to_rows("summary"))
-    _write_csv(d / "map_points.csv", res.to_rows("points"))
+    write_csv(d / "map.csv", res.to_rows("summary"))
+    write_csv(d / "map_points.csv", res.to_rows("points"))
     figs = res.figures(d / "figures")
     rows = res.to_rows("summary")
     findings = []

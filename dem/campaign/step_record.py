@@ -7,18 +7,15 @@ from pathlib import Path
 
 import numpy as np
 
-from dem.campaign.context import CampaignContext, _write_csv
+from dem.campaign.context import CampaignContext, write_csv
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-
 
 RECORD_FILE = "RSN6_IMPVALL.I_I-ELC180.AT2"  # El Centro 1940, the shared record set
 
 
-
-def _record_plan(ctx: CampaignContext) -> list:
+def record_plan(ctx: CampaignContext) -> list:
     ids = ["Sh02-Sd020"] if ctx.quick else ["Sh02-Sd020", "Sh06-Sd015", "Sh1-Sd020"]
     return [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1]
-
 
 
 # ---------------------------------------------------------------------------- recorded motion
@@ -37,7 +34,6 @@ class RecordAtPGA:
         return record_window(self.path, self.t_start, self.t_end).to_pga(amplitude)
 
 
-
 def record_window(path: str, t_start: float, t_end: float):
     """The part ``[t_start, t_end]`` [s] of a record file, baseline-corrected, with a 1 s zero tail."""
     from analytic.inputs import SampledMotion
@@ -49,28 +45,26 @@ def record_window(path: str, t_start: float, t_end: float):
     return with_zero_tail(baseline_correct(w), 1.0)
 
 
-
 def _record_path() -> Path:
     """The shared El Centro record, shipped with the project's test data (repository root: two folders up)."""
     return Path(__file__).resolve().parents[2] / "tests" / "data" / "ground_motions" / RECORD_FILE
 
 
-
 def step_record(ctx: CampaignContext, d: Path) -> dict:
     """One recorded accelerogram scaled until collapse, for three specimens (one when quick)."""
-    from specimens.constants import G
     from analytic.records import read_record
     from dem.core.model import as_model
     from dem.core.settings import Settings
     from dem.experiments.shake import ShakeProtocol
     from dem.experiments.thresholds import static_onset, threshold
+    from specimens.constants import G
 
     path = _record_path()
     full = read_record(path)
     t_pga = float(np.argmax(np.abs(full.values)) * full.dt)
     # strong-motion window around the peak: short enough to scan many amplitudes
     t0, t1 = max(0.0, t_pga - 1.0), t_pga + (2.0 if ctx.quick else 6.0)
-    specs = _record_plan(ctx)
+    specs = record_plan(ctx)
     rows = []
     for s in specs:
         model = as_model(s, config=ctx.config)
@@ -83,7 +77,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
                      "scale_factor": (a * G / full.pga) if a is not None else float("nan"),
                      "ratio_to_static": (a / lam) if a is not None else float("nan"), "mode": r.mode or "",
                      "n_sims": r.n_sims})
-    _write_csv(d / "record.csv", rows)
+    write_csv(d / "record.csv", rows)
     found = [r for r in rows if math.isfinite(r["collapse_pga_g"])]
     findings = [f"{r['id']}: the El Centro 1940 window collapses the arch at PGA {r['collapse_pga_g']:.3f} g "
                 f"(x{r['scale_factor']:.2f} the record, {r['ratio_to_static']:.2f} x the static lambda)." for r in found]

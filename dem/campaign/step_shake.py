@@ -6,24 +6,20 @@ from pathlib import Path
 
 import numpy as np
 
-from dem.campaign.context import CampaignContext, _write_csv
-
+from dem.campaign.context import CampaignContext, write_csv
 
 SHAKE_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # Hz, the reference study's pulses
-
 
 
 QUICK_SHAKE = (("Sh02-Sd020",), (2.0, 6.0))  # quick campaign: one specimen, two frequencies
 
 
-
-def _shake_plan(ctx: CampaignContext) -> tuple[list, tuple[float, ...]]:
+def shake_plan(ctx: CampaignContext) -> tuple[list, tuple[float, ...]]:
     """Specimens and pulse frequencies [Hz] of the shake step."""
     if ctx.quick:
         ids, freqs = QUICK_SHAKE
         return [s for s in ctx.specimens if s.id in ids] or ctx.specimens[:1], freqs
     return [s for s in ctx.specimens if round(s.arch.Sd, 3) in (0.15, 0.2)], SHAKE_FREQS
-
 
 
 # --------------------------------------------------------------------------------- shake table
@@ -35,14 +31,13 @@ def _lowest_threshold(domain) -> dict[float, float]:
     return out
 
 
-
 def step_shake(ctx: CampaignContext, d: Path) -> dict:
     """Shake-table thresholds (one-cycle sine) of the Sd = 0.15 and 0.20 specimens next to the four-bar."""
-    from dem.plotting.shake import plot_domain_over_analytic
     from dem.core.settings import Settings
     from dem.experiments.domain import analytic_domains, dem_failure_domain
+    from dem.plotting.shake import plot_domain_over_analytic
 
-    specs, freqs = _shake_plan(ctx)
+    specs, freqs = shake_plan(ctx)
     rows, figures = [], []
     for s in specs:
         dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers,
@@ -68,7 +63,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
         png = d / f"domain_{s.id}.png"
         plot_domain_over_analytic(dem, ana, png, title=f"{s.id}: DEM vs rocking linkages, one-cycle sine")
         figures.append({"path": f"shake/{png.name}", "caption": f"{s.id}: DEM shake thresholds over the analytic domains"})
-    _write_csv(d / "shake.csv", rows)
+    write_csv(d / "shake.csv", rows)
     ratios = np.array([r["ratio_dem_to_four_bar"] for r in rows], dtype=float)
     ok = np.isfinite(ratios)
     findings = []
@@ -89,16 +84,15 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     }
 
 
-
 def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list[dict]:
     """Time histories just below and at the first DEM threshold (lowest frequency that has one)."""
-    from specimens.constants import G
     from analytic.inputs import SinePulse
-    from dem.plotting.shake import save_shake_figure
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.shake import shake
+    from dem.plotting.shake import save_shake_figure
     from specimens.blocks import discretise
+    from specimens.constants import G
 
     t = next((t for t in dem["thresholds"] if t["amplitude_g"] is not None), None)
     if t is None:

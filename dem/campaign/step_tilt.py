@@ -6,17 +6,16 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from dem.campaign.context import CampaignContext, _studies, _write_csv
+from dem.campaign.context import CampaignContext, studies_dir, write_csv
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
 
 # ------------------------------------------------------------------------ what each step runs
-def _tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
+def tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
     frictions = {"reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
     if not ctx.quick:  # the no-sliding validation doubles the cost: full campaign only
         frictions["no_sliding"] = (NO_SLIDING_MU, NO_SLIDING_MU)
     return frictions
-
 
 
 # ------------------------------------------------------------------------------------ tilt
@@ -27,7 +26,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     from dem.studies.sweep import case_key, run_study
     from specimens.blocks import discretise
 
-    frictions = _tilt_frictions(ctx)
+    frictions = tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
     # the tilt test's protocol (LP-started bisection to 0.5 %, first-bracket ends simulated last), quick
     # or not: 3 simulations per test on 20 of the 22 tests of the full step, where the friction map's
@@ -35,7 +34,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
     cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng)
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
-    res = run_study(list(cases.values()), DEM_CASE, _studies(ctx) / "tilt.h5", workers=ctx.workers, resume=True,
+    res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "tilt.h5", workers=ctx.workers, resume=True,
                     study_attrs={"study": "campaign-tilt", "config": ctx.config, "quick": ctx.quick})
     by_key = res.by_key
     rows = []
@@ -65,7 +64,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
             out["err_no_sliding_pct"] = rows_k["no_sliding"].err_pct
             out["ratio_reference_to_no_sliding"] = out["lambda_dem_reference"] / out["lambda_dem_no_sliding"]
         rows.append(out)
-    _write_csv(d / "tilt.csv", rows)
+    write_csv(d / "tilt.csv", rows)
 
     fig = Figure(figsize=(7, 4.8))
     ax = fig.subplots()
@@ -123,7 +122,6 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
         "figures": figures,
         "findings": findings,
     }
-
 
 
 def _collapse_figures(rows: list[dict], records: dict, cases: dict, d: Path) -> list[dict]:

@@ -4,8 +4,15 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir
 from analytic.summary import analyse
+from dem.cli.common import (
+    add_arch_arguments,
+    arch_from_args,
+    default_of,
+    discretisation_kwargs,
+    print_json,
+    writable_dir,
+)
 from specimens.errors import ArchdemInputError
 
 

@@ -83,14 +83,8 @@ def discretisation_kwargs(args: argparse.Namespace) -> dict[str, Any]:
     return kw
 
 
-
-
 def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
-
-
-
-
 
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:

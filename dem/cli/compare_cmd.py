@@ -9,9 +9,9 @@ from specimens.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.experiments.compare_engines import compare, summary
     from dem.core.engines import available_engines
     from dem.core.settings import Settings
+    from dem.experiments.compare_engines import compare, summary
     from specimens.catalogue import select_specimens
 
     ids = [s.id for s in select_specimens(args.specimens)]

@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import arch_from_args, default_of, discretisation_kwargs, parse_grid, print_json, writable_file
+from dem.cli.common import (
+    arch_from_args,
+    default_of,
+    discretisation_kwargs,
+    parse_grid,
+    print_json,
+    writable_file,
+)
 from dem.experiments.domain import analytic_domains, dem_failure_domain
 from specimens.errors import ArchdemInputError
 

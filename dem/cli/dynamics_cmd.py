@@ -4,8 +4,14 @@ from __future__ import annotations
 import argparse
 import math
 
-
-from dem.cli.common import add_arch_arguments, arch_from_args, default_of, parse_grid, print_json, writable_file
+from dem.cli.common import (
+    add_arch_arguments,
+    arch_from_args,
+    default_of,
+    parse_grid,
+    print_json,
+    writable_file,
+)
 from specimens.blocks import DEFAULT_DENSITY
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError

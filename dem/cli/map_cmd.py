@@ -30,9 +30,9 @@ def _specimens(args: argparse.Namespace) -> list:
 
 def _run(args: argparse.Namespace) -> int:
     from dem.core.settings import Settings
-    from specimens.io import unique_run_path
     from dem.experiments.friction_map import catalogue_map, parse_mu_grid
     from dem.studies.sweep import StudyInterrupted
+    from specimens.io import unique_run_path
 
     specs = _specimens(args)
     mus = parse_mu_grid(args.mu)

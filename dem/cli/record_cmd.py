@@ -10,8 +10,8 @@ from dem.cli.common import print_json
 
 def record_summary(path: str, fmt: str = "auto", units: str | None = None) -> dict:
     """Name, sampling, duration and PGA of a record file (SI units, PGA also in g)."""
-    from specimens.constants import G
     from analytic.records import load_record
+    from specimens.constants import G
 
     rec = load_record(path, fmt, units)
     m = rec.motion

@@ -5,7 +5,16 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import (
+    add_arch_arguments,
+    add_engine_argument,
+    arch_from_args,
+    default_of,
+    discretisation_kwargs,
+    print_json,
+    writable_dir,
+    writable_file,
+)
 from specimens.errors import ArchdemInputError
 
 
@@ -40,9 +49,9 @@ def _motion(args: argparse.Namespace):
 
 
 def _run_shake(args: argparse.Namespace) -> int:
-    from specimens.io import unique_run_path
     from dem.experiments.shake import ShakeProtocol, shake
     from dem.formats.shake import save_shake
+    from specimens.io import unique_run_path
 
     motion = _motion(args)
     label, _, _, model, settings = _model_and_settings(args)

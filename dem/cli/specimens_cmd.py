@@ -3,7 +3,15 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import (
+    add_arch_arguments,
+    arch_from_args,
+    default_of,
+    discretisation_kwargs,
+    print_json,
+    writable_dir,
+    writable_file,
+)
 from specimens.catalogue import JSON_KEYS, catalogue_rows
 from specimens.errors import ArchdemInputError
 

@@ -4,17 +4,26 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.cli.common import add_engine_argument, add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, print_json, writable_dir, writable_file
+from dem.cli.common import (
+    add_arch_arguments,
+    add_engine_argument,
+    arch_from_args,
+    default_of,
+    discretisation_kwargs,
+    print_json,
+    writable_dir,
+    writable_file,
+)
 from specimens.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:
-    from specimens.io import unique_run_path
     from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from dem.experiments.tilt import TiltProtocol, tilt
     from dem.formats.tilt import save_result
-    from dem.core.settings import Settings
     from specimens.blocks import discretise
+    from specimens.io import unique_run_path
 
     label, arch = arch_from_args(args)
     if args.id is None and args.Ri is None and args.Sh is None:

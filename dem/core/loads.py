@@ -19,8 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from specimens.constants import G
 from analytic.inputs import GroundMotion
+from specimens.constants import G
 
 
 def tilt_gravity(lam: float, g: float = G) -> np.ndarray:

@@ -10,8 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, fields, replace
 
-from specimens.constants import G
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
 from specimens.errors import ArchdemInputError
 
 
@@ -96,5 +95,3 @@ class Settings:
 
     def with_(self, **kw) -> "Settings":
         return replace(self, **kw)
-
-

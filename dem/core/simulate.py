@@ -51,7 +51,6 @@ class History:
         return float(np.sum(self.fpower[1:] * np.diff(self.t)))
 
 
-
 @dataclass
 class SimResult:
     """One simulation: load description, history, collapse and mode read from the history."""
@@ -69,13 +68,11 @@ class SimResult:
     t_rest: float = float("nan")  # time [s] at which the run was ended at rest (``rest``), NaN if it was not
 
 
-
 def _kinetic_energy(mass: np.ndarray, inertia: np.ndarray, v: np.ndarray, w: np.ndarray, R: np.ndarray) -> float:
     """Kinetic energy [J] of bodies of ``mass`` (n,) and body-frame ``inertia`` (n, 3, 3) moving at
     ``v``, ``w`` (n, 3) with orientations ``R`` (n, 3, 3): w . (R I R^T w) = (R^T w) . I (R^T w)."""
     wb = np.einsum("kji,kj->ki", R, w)
     return float(0.5 * np.sum(mass * np.einsum("ki,ki->k", v, v)) + 0.5 * np.einsum("ki,kij,kj->", wb, inertia, wb))
-
 
 
 def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray, base_x: float = 0.0) -> float:
@@ -98,7 +95,6 @@ def _friction_power(engine, v: np.ndarray, w: np.ndarray, pos: np.ndarray, base_
     vrel = vel(c.a, c.point) - vel(c.b, c.point)
     vt = vrel - (vrel * c.normal).sum(1, keepdims=True) * c.normal
     return float(np.sum(np.linalg.norm(c.ft, axis=1) * np.linalg.norm(vt, axis=1)))
-
 
 
 def simulate(model: Model, settings: Settings, load: Load, duration: float, record_every: float | None = None,
@@ -206,7 +202,6 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
                      time.perf_counter() - wall0, step, t_rest)
 
 
-
 def read_mode(model: Model, settings: Settings, hist: History,
               Rs: np.ndarray | None = None) -> tuple[list[detect.JointState], str]:
     """Joint states and mode over the mode window of ``hist`` (or over the whole history when
@@ -223,7 +218,6 @@ def read_mode(model: Model, settings: Settings, hist: History,
     if not np.any(hist.dmax >= lo):
         mode = "none"
     return states, mode
-
 
 
 # ------------------------------------------------------------------------------------- tilt

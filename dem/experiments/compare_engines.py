@@ -10,10 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from specimens.constants import NO_SLIDING_MU
 from dem.core.settings import Settings
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from dem.experiments.tilt_check import TiltCheck, check_result, reference_lp
+from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
 
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}

@@ -52,7 +52,14 @@ from typing import Sequence
 import numpy as np
 
 from analytic.search import midpoint, search, wide
-from dem.studies.cases import DEM_CASE, MAP_PROTOCOL, MAP_TILT_TOL, RC_REF, _scaled_protocol, make_case
+from dem.studies.cases import (
+    DEM_CASE,
+    MAP_PROTOCOL,
+    MAP_TILT_TOL,
+    RC_REF,
+    make_case,
+    scaled_protocol,
+)
 from specimens.blocks import DEFAULT_VOUSSOIRS
 from specimens.constants import REFERENCE_MU_BASE
 from specimens.errors import ArchdemInputError
@@ -373,7 +380,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     if not (isinstance(refine, int) and 0 <= refine <= 20):
         raise ArchdemInputError(f"refine (bisection steps) must be an integer in 0..20, got {refine!r}")
     protocol = dict(protocol if protocol is not None else MAP_PROTOCOL)
-    _scaled_protocol(protocol, 1.0)  # validate in the main process
+    scaled_protocol(protocol, 1.0)  # validate in the main process
     study_attrs = {"study": STUDY_KIND, "config": config, "mu_base": float(mu_base), "protocol": protocol,
                    "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs)}
 

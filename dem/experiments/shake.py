@@ -37,12 +37,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from specimens.constants import G
 from analytic.inputs import GroundMotion
 from dem.core.loads import GroundShake
 from dem.core.model import Model, as_model
-from dem.core.simulate import SimResult, simulate
 from dem.core.settings import Settings
+from dem.core.simulate import SimResult, simulate
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 FORMAT = "archdem-shake-1"
@@ -215,12 +215,11 @@ def collapses(model: Model, motion: GroundMotion, settings: Settings, protocol: 
 
 
 # ------------------------------------------------------------------------------------ I/O
-def _motion_trace(motion: GroundMotion, duration: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
+def motion_trace(motion: GroundMotion, duration: float, dt: float) -> tuple[np.ndarray, np.ndarray]:
     n = int(math.floor(duration / dt + 1e-9)) + 1
     t = dt * np.arange(n)
     return t, np.asarray(motion.acceleration(t), float)
 
 
 __all__ = ["FORMAT", "ShakeProtocol", "ShakeResult", "shake", "collapses", "crown_displacement", "first_rebound",
-           "shake_settings", "save_shake", "load_shake"]
-
+           "shake_settings"]

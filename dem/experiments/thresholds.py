@@ -34,14 +34,13 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from specimens.constants import G
 from analytic.inputs import GroundMotion, SinePulse
+from analytic.search import Bracket, search
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, collapses
-from analytic.search import Bracket, search
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
-
 
 SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
 
@@ -271,6 +270,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
         return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs),
                                scan_ratio, tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
     # the lowest scanned amplitude collapses: step down (at most 6 times) until something survives, then bisect
+
     def run(a: float) -> Outcome:
         r = _run_one(job(a))
         runs.append(r)

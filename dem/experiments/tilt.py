@@ -28,15 +28,13 @@ import time
 from dataclasses import dataclass, field, replace
 from typing import Callable
 
-
+from analytic.search import search
 from dem.core import detect
 from dem.core.loads import TiltHold, TiltRamp, TiltStairs
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
-from analytic.search import search
 from specimens.errors import ArchdemInputError
-
 
 # First bracket of the hold protocol, relative to its first estimate: the widest that reaches the
 # 0.5 % tolerance in 3 bisections (docs/decisions/002-guess-bracket.md)

@@ -3,9 +3,8 @@ from __future__ import annotations
 
 import json
 
-import numpy as np
-
 import h5py
+import numpy as np
 
 from dem.core.detect import JointState
 from dem.core.model import BaseSpec, BodySpec, JointSpec, Model
@@ -13,13 +12,8 @@ from dem.core.simulate import History, SimResult
 from specimens.io import to_json
 
 
-def _js(o) -> str:
-    return to_json(o)
-
-
-
-def _write_model(g: h5py.Group, m: Model) -> None:
-    g.attrs.update(name=m.name, size=m.size, crown=m.crown, source=_js(m.source))
+def write_model(g: h5py.Group, m: Model) -> None:
+    g.attrs.update(name=m.name, size=m.size, crown=m.crown, source=to_json(m.source))
     bg = g.create_group("bodies")
     for k, b in enumerate(m.bodies):
         h = bg.create_group(f"{k:04d}")
@@ -28,7 +22,7 @@ def _write_model(g: h5py.Group, m: Model) -> None:
         for i, p in enumerate(b.pieces):
             h[f"piece{i}"] = p
     jg = g.create_group("joints")
-    jg.attrs["names"] = _js([j.name for j in m.joints])
+    jg.attrs["names"] = to_json([j.name for j in m.joints])
     jg["ab"] = np.array([[j.a, j.b] for j in m.joints], dtype=int).reshape(-1, 2)
     jg["p_i"] = np.array([j.p_i for j in m.joints]).reshape(-1, 2)
     jg["p_e"] = np.array([j.p_e for j in m.joints]).reshape(-1, 2)
@@ -39,8 +33,7 @@ def _write_model(g: h5py.Group, m: Model) -> None:
         base[f"piece{i}"] = p
 
 
-
-def _read_model(g: h5py.Group) -> Model:
+def read_model(g: h5py.Group) -> Model:
     bodies = []
     for key in sorted(g["bodies"]):
         h = g["bodies"][key]
@@ -57,10 +50,9 @@ def _read_model(g: h5py.Group) -> Model:
                  json.loads(g.attrs["source"]))
 
 
-
-def _write_sim(g: h5py.Group, s: SimResult) -> None:
-    g.attrs.update(load=_js(s.load), duration=s.duration, collapsed=s.collapsed, t_collapse=s.t_collapse,
-                   mode=s.mode, joints=_js([j.to_dict() for j in s.joints]), out_of_plane=_js(s.out_of_plane),
+def write_sim(g: h5py.Group, s: SimResult) -> None:
+    g.attrs.update(load=to_json(s.load), duration=s.duration, collapsed=s.collapsed, t_collapse=s.t_collapse,
+                   mode=s.mode, joints=to_json([j.to_dict() for j in s.joints]), out_of_plane=to_json(s.out_of_plane),
                    wall_s=s.wall_s, steps=s.steps, t_rest=s.t_rest,
                    friction_work=s.history.friction_work)
     h = s.history
@@ -68,8 +60,7 @@ def _write_sim(g: h5py.Group, s: SimResult) -> None:
         g.create_dataset(k, data=getattr(h, k), compression="gzip" if getattr(h, k).size > 1000 else None)
 
 
-
-def _read_sim(g: h5py.Group) -> SimResult:
+def read_sim(g: h5py.Group) -> SimResult:
     h = History(*(g[k][()] for k in ("t", "pos", "quat", "gravity", "dmax", "ke", "fpower")))
     joints = [JointState(**d) for d in json.loads(g.attrs["joints"])]
     return SimResult(json.loads(g.attrs["load"]), float(g.attrs["duration"]), h, bool(g.attrs["collapsed"]),

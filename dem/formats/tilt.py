@@ -15,11 +15,11 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from dem.formats.hdf5 import _js, _read_model, _read_sim, _write_model, _write_sim
-from specimens.io import atomic_path
 from dem.core.detect import JointState
-from dem.experiments.tilt import TiltProtocol, TiltResult
 from dem.core.settings import Settings
+from dem.experiments.tilt import TiltProtocol, TiltResult
+from dem.formats.hdf5 import read_model, read_sim, write_model, write_sim
+from specimens.io import atomic_path, to_json
 
 FORMAT = "archdem-tilt-1"
 FORMER_GUESS_BRACKET = (0.95, 1.01)  # the first bracket of files written before TiltProtocol.guess_bracket
@@ -34,16 +34,16 @@ def save_result(result: TiltResult, path: str | Path) -> Path:
             f.attrs.update({
                 "format": FORMAT, "label": result.label, "lambda": result.lam, "theta_deg": result.theta_deg,
                 "mode": result.mode, "n_sims": result.n_sims, "wall_s": result.wall_s,
-                "bracket": np.array(result.bracket), "settings": _js(result.settings.to_dict()),
-                "protocol": _js(result.protocol.__dict__), "criterion": _js(result.criterion),
-                "versions": _js(result.versions), "joints": _js([j.to_dict() for j in result.joints]),
-                "levels": _js(result.levels), "summary": _js(result.summary()),
+                "bracket": np.array(result.bracket), "settings": to_json(result.settings.to_dict()),
+                "protocol": to_json(result.protocol.__dict__), "criterion": to_json(result.criterion),
+                "versions": to_json(result.versions), "joints": to_json([j.to_dict() for j in result.joints]),
+                "levels": to_json(result.levels), "summary": to_json(result.summary()),
             })
-            _write_model(f.create_group("model"), result.model)
+            write_model(f.create_group("model"), result.model)
             for name in ("collapse", "stable"):
                 s = getattr(result, name)
                 if s is not None:
-                    _write_sim(f.create_group(name), s)
+                    write_sim(f.create_group(name), s)
     return path
 
 
@@ -54,8 +54,8 @@ def load_result(path: str | Path) -> TiltResult:
             from specimens.errors import ArchdemInputError
 
             raise ArchdemInputError(f"{path} is not an archdem tilt result")
-        model = _read_model(f["model"])
-        sims = {n: (_read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}
+        model = read_model(f["model"])
+        sims = {n: (read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}
         return TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
             # a result written before the rest rule held every level its full hold_time, and one

@@ -31,8 +31,8 @@ def read_run(path: str | Path) -> dict:
     except OSError:
         raise ArchdemInputError(f"{path}: not an HDF5 run file") from None
     if fmt == "archdem-shake-1":
-        from specimens.constants import G
         from dem.formats.shake import load_shake
+        from specimens.constants import G
 
         d = load_shake(path)
         s = d["summary"]
@@ -66,8 +66,8 @@ def _outlines(model, pos: np.ndarray, R: np.ndarray) -> list[np.ndarray]:
 def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 200, overwrite: bool = False) -> Path:
     """Write the animation of run file ``path`` to ``out`` (.gif or .mp4); returns ``out``."""
 
-    from matplotlib.figure import Figure
     from matplotlib import animation
+    from matplotlib.figure import Figure
 
     from specimens.io import atomic_path
 

@@ -32,7 +32,6 @@ def plot_engine_comparison(rows, axes=None):
 def save_engine_comparison(rows, path: str | Path) -> Path:
     """Write the figure (png/pdf/svg) atomically."""
 
-
     from specimens.io import atomic_path
 
     path = Path(path)

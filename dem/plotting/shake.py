@@ -50,9 +50,9 @@ def plot_shake_history(t_in: np.ndarray, a_in: np.ndarray, t: np.ndarray, crown_
 
 def save_shake_figure(result, path: str | Path) -> Path:
     """Time-history figure of a :class:`dem.experiments.shake.ShakeResult`."""
-    from dem.experiments.shake import _motion_trace
+    from dem.experiments.shake import motion_trace
 
-    t_in, a_in = _motion_trace(result.motion, result.sim.duration, result.settings.dt)
+    t_in, a_in = motion_trace(result.motion, result.sim.duration, result.settings.dt)
     h = result.sim.history
     fig = plot_shake_history(t_in, a_in, h.t, result.crown_u, h.dmax, result.model.size,
                              result.settings.collapse_fraction, result.t_collapse, result.t_rebound,

@@ -18,7 +18,6 @@ import numpy as np
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
-
 DEM_CASE = "dem.studies.cases:tilt_case"
 SYNTHETIC_CASE = "dem.studies.cases:synthetic_case"
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
@@ -33,16 +32,13 @@ CASE_PROTOCOL_FIELDS = ("ramp_time", "hold_time", "rest_after", "rest_window", "
                         "probe_ends")
 
 
-
 def arch_params(arch: PointedArch) -> dict:
     """The exact constructor parameters of ``arch`` (JSON-serialisable) [m]."""
     return {"e": float(arch.e), "t": float(arch.t), "Rp": float(arch.Rp), "width": float(arch.width)}
 
 
-
 def arch_from_params(p: dict) -> PointedArch:
     return PointedArch(e=p["e"], t=p["t"], Rp=p["Rp"], width=p["width"])
-
 
 
 def time_scale_of(arch: PointedArch, time_scale: float | str = "auto") -> float:
@@ -55,10 +51,8 @@ def time_scale_of(arch: PointedArch, time_scale: float | str = "auto") -> float:
     return s
 
 
-
 def _jsonable(v):
     return list(v) if isinstance(v, tuple) else v
-
 
 
 def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_base: float,
@@ -90,8 +84,7 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     }
 
 
-
-def _scaled_protocol(d: dict, s: float):
+def scaled_protocol(d: dict, s: float):
     from dem.experiments.tilt import TiltProtocol
 
     names = {f.name for f in fields(TiltProtocol)}
@@ -101,8 +94,7 @@ def _scaled_protocol(d: dict, s: float):
     return TiltProtocol(**d).slowed(s)
 
 
-
-def _scaled_settings(case: dict):
+def scaled_settings(case: dict):
     from dem.core.settings import Settings
 
     s = float(case.get("time_scale", 1.0))
@@ -113,17 +105,15 @@ def _scaled_settings(case: dict):
     return Settings(mu_joint=case["mu_joint"], mu_base=case["mu_base"], **kw)
 
 
-
 def _case_setup(case: dict):
     """Assembly, model, settings and protocol of a DEM tilt case."""
     from dem.core.model import from_assembly
     from specimens.blocks import discretise
 
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"])
-    settings = _scaled_settings(case)
-    proto = _scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
+    settings = scaled_settings(case)
+    proto = scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
     return asm, from_assembly(asm, name=case["label"]), settings, proto
-
 
 
 # ----------------------------------------------------------------------------- case functions
@@ -153,15 +143,14 @@ def tilt_case(case: dict) -> dict:
     }
 
 
-
 def replay_tilt(case: dict, results: dict):
     """The :class:`dem.experiments.tilt.TiltResult` of a finished hold-protocol DEM ``case`` whose
     stored ``results`` are given, with the time history of its collapse: the collapsing level
     (upper end of the bracket) is simulated again. The engines are deterministic for identical
     command sequences, so this is the simulation the case ran (one simulation, not a tilt test)."""
     from dem.core import detect
-    from dem.experiments.tilt import TiltResult, hold_level
     from dem.core.provenance import run_provenance
+    from dem.experiments.tilt import TiltResult, hold_level
 
     _, model, settings, proto = _case_setup(case)
     if proto.kind != "hold":
@@ -172,7 +161,6 @@ def replay_tilt(case: dict, results: dict):
     return TiltResult(case["label"], model, settings, proto, float(results["lambda"]), (lo, hi),
                       int(results["n_sims"]), float(results["wall_s"]), sim.mode, sim.joints, levels, sim, None,
                       detect.criterion(settings, model), run_provenance(settings.engine))
-
 
 
 def synthetic_case(case: dict) -> dict:

@@ -8,11 +8,11 @@ import pytest
 
 from analytic.domain import domain_column
 from analytic.dynamics import linearised_collapse, simulate
-from specimens.constants import G
 from analytic.inputs import PulseA, SinePulse
 from analytic.linkage import arch_four_bar, oppenheim_hinges
 from analytic.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 

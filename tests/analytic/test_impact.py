@@ -43,6 +43,7 @@ def _explicit_impulses(before, after, phidot_before=-1.0):
         rhs[row] = I[j] * v0[j, 2]
         row += 1
     # compatibility: velocity of hinge point k on the blocks it joins (ground = 0)
+
     def point_vel(j, p):
         r = p - G[j]
         out = np.zeros((2, n))

@@ -12,9 +12,8 @@ from analytic.limit_discrete import enumerate_mechanisms
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
 from specimens.errors import ArchdemInputError
-from specimens.geometry import PointedArch
+from specimens.geometry import PointedArch, ring_segment_properties
 from specimens.sections import region_properties
-from specimens.geometry import ring_segment_properties
 
 
 @pytest.fixture(scope="module")

@@ -4,8 +4,13 @@ import math
 import numpy as np
 import pytest
 
-from analytic.limit_discrete import (ContactModel, enumerate_mechanisms, four_hinge_lambda, solve_contact_lp,
-                                     solve_lp)
+from analytic.limit_discrete import (
+    ContactModel,
+    enumerate_mechanisms,
+    four_hinge_lambda,
+    solve_contact_lp,
+    solve_lp,
+)
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
 from specimens.errors import ArchdemInputError

@@ -7,8 +7,13 @@ import numpy as np
 import pytest
 
 from analytic.layout import continuous_layout
-from analytic.linkage import (arch_four_bar, arch_two_bar, mirror_layout, oppenheim_hinges,
-                              parse_hinge_angles)
+from analytic.linkage import (
+    arch_four_bar,
+    arch_two_bar,
+    mirror_layout,
+    oppenheim_hinges,
+    parse_hinge_angles,
+)
 from specimens.catalogue import get_specimen
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch

@@ -15,8 +15,6 @@ from analytic.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen
 
 
-
-
 def _fd(f, x, h):
     """Fourth-order central difference (truncation O(h^4))."""
     return (-f(x + 2 * h) + 8 * f(x + h) - 8 * f(x - h) + f(x - 2 * h)) / (12 * h)

@@ -12,11 +12,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import SampledMotion
-from analytic.records import (baseline_correct, detect_format, load_record, read_record, resample,
-                              with_zero_tail)
+from analytic.records import (
+    baseline_correct,
+    detect_format,
+    load_record,
+    read_record,
+    resample,
+    with_zero_tail,
+)
 from dem.cli import main
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "ground_motions"

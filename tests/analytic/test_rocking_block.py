@@ -8,8 +8,8 @@ import pytest
 
 from analytic.dynamics import integrate
 from analytic.impact import energy_restitution, post_impact
-from specimens.constants import G
 from analytic.rocking_block import RockingBlock
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 

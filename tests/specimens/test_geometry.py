@@ -3,7 +3,7 @@ import math
 import numpy as np
 import pytest
 
-from specimens.catalogue import CATALOGUE, _TABLE, full_scale_set, get_specimen
+from specimens.catalogue import _TABLE, CATALOGUE, full_scale_set, get_specimen
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 

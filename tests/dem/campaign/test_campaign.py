@@ -4,8 +4,8 @@ from pathlib import Path
 import pytest
 
 from dem.campaign.context import CampaignContext
-from dem.campaign.runner import all_steps
 from dem.campaign.estimate import estimate
+from dem.campaign.runner import all_steps
 from specimens.catalogue import select_specimens
 
 

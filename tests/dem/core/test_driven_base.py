@@ -6,7 +6,6 @@ import math
 import numpy as np
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import SinePulse
 from dem.core.engines import available_engines, get_engine
 from dem.core.model import from_assembly
@@ -15,6 +14,7 @@ from dem.experiments.shake import ShakeProtocol, shake
 from dem.experiments.thresholds import threshold
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 ENGINES = [e for e in ("pybullet", "mujoco") if e in available_engines()]

@@ -4,9 +4,9 @@ import math
 import numpy as np
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import SinePulse
 from dem.core.loads import GroundShake, TiltHold, TiltRamp, TiltStairs, tilt_gravity
+from specimens.constants import G
 
 
 @pytest.mark.parametrize("lam", [0.0, 0.2, 0.577, 2.0])

@@ -167,12 +167,12 @@ def test_time_scale_similarity():
     c_big = cases.make_case("b", big, "glued", 0.5, 1.0)
     s = math.sqrt(2.5 / 0.2)  # lengths x 12.5 -> times x sqrt(12.5) under gravity
     assert c_small["time_scale"] == 1.0 and c_big["time_scale"] == pytest.approx(s, rel=1e-12)
-    p0, p1 = cases._scaled_protocol(c_small["protocol"], 1.0), cases._scaled_protocol(c_big["protocol"], s)
+    p0, p1 = cases.scaled_protocol(c_small["protocol"], 1.0), cases.scaled_protocol(c_big["protocol"], s)
     assert p1.hold_time == pytest.approx(s * p0.hold_time) and p1.scan_rate == pytest.approx(p0.scan_rate / s)
     # the rest rule: its times scale like the hold, its growth is relative to the ring thickness
     assert p1.rest_after == pytest.approx(s * p0.rest_after) and p1.rest_window == pytest.approx(s * p0.rest_window)
     assert p1.rest_growth == p0.rest_growth
-    st0, st1 = cases._scaled_settings(c_small), cases._scaled_settings(c_big)
+    st0, st1 = cases.scaled_settings(c_small), cases.scaled_settings(c_big)
     # same number of steps per protocol phase at both scales
     assert p1.hold_time / st1.dt == pytest.approx(p0.hold_time / st0.dt, rel=1e-9)
 
@@ -204,12 +204,12 @@ def test_map_cases_keep_their_own_first_bracket():
     arch = PointedArch.from_ratios(0.6, 0.15, 0.2)
     c = cases.make_case("s", arch, "glued", 0.5, 1.0)
     assert tuple(c["protocol"]["guess_bracket"]) == cases.MAP_GUESS_BRACKET != GUESS_BRACKET
-    assert cases._scaled_protocol(c["protocol"], 1.0).guess_bracket == cases.MAP_GUESS_BRACKET
+    assert cases.scaled_protocol(c["protocol"], 1.0).guess_bracket == cases.MAP_GUESS_BRACKET
     full = cases.make_case("s", arch, "glued", 0.5, 1.0, protocol={"kind": "hold", "tol": 0.005, "start": "lp"})
-    assert cases._scaled_protocol(full["protocol"], 1.0).guess_bracket == TiltProtocol().guess_bracket == GUESS_BRACKET
+    assert cases.scaled_protocol(full["protocol"], 1.0).guess_bracket == TiltProtocol().guess_bracket == GUESS_BRACKET
     assert case_key(full) != case_key({**full, "protocol": {**full["protocol"], "guess_bracket": [0.95, 1.01]}})
     assert c["protocol"]["probe_ends"] == full["protocol"]["probe_ends"] == TiltProtocol().probe_ends == "last"
-    assert cases._scaled_protocol(c["protocol"], 1.0).probe_ends == "last"
+    assert cases.scaled_protocol(c["protocol"], 1.0).probe_ends == "last"
     assert case_key(full) != case_key({**full, "protocol": {**full["protocol"], "probe_ends": "first"}})
 
 

@@ -5,13 +5,12 @@ import math
 import numpy as np
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import PulseA, SinePulse
 from dem.core.model import single_block
-from specimens.constants import NO_SLIDING_MU
 from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, first_rebound, shake
 from dem.formats.shake import load_shake, save_shake
+from specimens.constants import NO_SLIDING_MU, G
 
 # full base 0.1 m x height 0.4 m (b/h = 0.25); planar, because the analytic model is 2-D and the
 # 3-D block (0.1 m wide) otherwise rocks out of plane too (measured: 45 mm drift along z, then an

@@ -4,14 +4,13 @@ import math
 
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import SinePulse
-from dem.experiments import thresholds
 from dem.core.model import single_block
-from specimens.constants import NO_SLIDING_MU
 from dem.core.settings import Settings
+from dem.experiments import thresholds
 from dem.experiments.shake import ShakeProtocol
 from dem.experiments.thresholds import Outcome, _bands, scan_grid, threshold
+from specimens.constants import NO_SLIDING_MU, G
 
 
 def test_scan_grid_spacing():

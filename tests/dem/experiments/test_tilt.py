@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from dem.core.model import single_block
-from dem.experiments.tilt import TiltProtocol, tilt
 from dem.core.settings import Settings
+from dem.experiments.tilt import TiltProtocol, tilt
 
 B, H = 0.1, 0.2  # b/h = 0.5
 MU_SLIDE = 0.3  # < b/h: Coulomb sliding at lambda = mu
@@ -209,9 +209,9 @@ def test_rest_rule_on_an_arch_below_and_above_the_lp():
     # collapses as when held the full hold
     from dem.core.model import from_assembly
     from dem.experiments.tilt import lp_guess
-    from specimens.constants import NO_SLIDING_MU
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
+    from specimens.constants import NO_SLIDING_MU
 
     asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
     m, s = from_assembly(asm), Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)

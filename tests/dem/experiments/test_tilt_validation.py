@@ -4,11 +4,11 @@ import numpy as np
 import pytest
 
 from dem.core.model import from_assembly
-from dem.experiments.tilt import TiltProtocol, tilt
-from specimens.constants import NO_SLIDING_MU
 from dem.core.settings import Settings
+from dem.experiments.tilt import TiltProtocol, tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
+from specimens.constants import NO_SLIDING_MU
 
 lim = pytest.importorskip("analytic.limit_discrete", reason="discrete limit analysis not available")
 

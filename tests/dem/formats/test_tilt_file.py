@@ -3,9 +3,9 @@ import numpy as np
 import pytest
 
 from dem.core.model import single_block
+from dem.core.settings import Settings
 from dem.experiments.tilt import TiltProtocol, tilt
 from dem.formats.tilt import load_result, save_result
-from dem.core.settings import Settings
 from specimens.errors import ArchdemInputError
 
 

@@ -4,13 +4,13 @@ import shutil
 import numpy as np
 import pytest
 
-from specimens.constants import G
 from analytic.inputs import SinePulse
-from dem.plotting.animate import animate, read_run
 from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, shake
 from dem.formats.shake import save_shake
+from dem.plotting.animate import animate, read_run
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 

@@ -13,9 +13,9 @@ import pytest
 from dem.core.engines import available_engines, get_engine
 from dem.core.loads import Rest, TiltHold
 from dem.core.model import from_assembly, single_block
-from dem.experiments.tilt import TiltProtocol, tilt
-from dem.core.simulate import simulate
 from dem.core.settings import Settings
+from dem.core.simulate import simulate
+from dem.experiments.tilt import TiltProtocol, tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 

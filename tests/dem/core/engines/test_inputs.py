@@ -75,11 +75,11 @@ def test_last_bit_changes_of_the_model_do_not_reach_the_engine():
 
     from dem.core.loads import TiltHold
     from dem.core.model import from_assembly
-    from dem.core.simulate import simulate
-    from specimens.constants import NO_SLIDING_MU
     from dem.core.settings import Settings
+    from dem.core.simulate import simulate
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
+    from specimens.constants import NO_SLIDING_MU
 
     m = from_assembly(discretise(get_specimen("Sh1-Sd020").arch, config="glued"), name="x")
     nudged = replace(m, bodies=tuple(

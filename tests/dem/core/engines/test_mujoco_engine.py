@@ -7,13 +7,18 @@ import pytest
 pytest.importorskip("mujoco")
 
 from dem.core.engines import available_engines, get_engine  # noqa: E402
-from dem.core.engines.mujoco_engine import DEFAULT_OPTIONS, MuJoCoOptions, mjcf, substeps  # noqa: E402
+from dem.core.engines.mujoco_engine import (  # noqa: E402
+    DEFAULT_OPTIONS,
+    MuJoCoOptions,
+    mjcf,
+    substeps,
+)
 from dem.core.model import from_assembly, single_block  # noqa: E402
-from dem.experiments.tilt import tilt  # noqa: E402
-from specimens.constants import NO_SLIDING_MU  # noqa: E402
 from dem.core.settings import Settings
+from dem.experiments.tilt import tilt  # noqa: E402
 from specimens.blocks import discretise  # noqa: E402
 from specimens.catalogue import get_specimen  # noqa: E402
+from specimens.constants import NO_SLIDING_MU  # noqa: E402
 
 ENGINE = "mujoco"
 B, H = 0.1, 0.2  # b/h = 0.5
