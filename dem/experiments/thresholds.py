@@ -277,10 +277,12 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
         return r
 
     a0 = scan[0].amplitude_g
-    res = search(run, a0 / scan_ratio, a0, tol, rule="ratio", geometric=True, is_upper=lambda r: r.collapsed,
-                 hi_run=scan[0], down=lambda a: a / scan_ratio, ends="first", max_runs=max_sims - len(scan), max_down=6)
-    if res.status == "no_lower":
-        raise ArchdemInputError(f"collapse at every amplitude down to {res.hi:.4g} g; lower --a-min")
+    below = search(run, a0 / scan_ratio, a0, math.inf, rule="ratio", is_upper=lambda r: r.collapsed, hi_run=scan[0],
+                   down=lambda a: a / scan_ratio, ends="first", max_down=6)  # tol inf: find the bracket only
+    if below.status == "no_lower":
+        raise ArchdemInputError(f"collapse at every amplitude down to {below.hi:.4g} g; lower --a-min")
+    res = search(run, below.lo, below.hi, tol, rule="ratio", geometric=True, is_upper=lambda r: r.collapsed,
+                 lo_run=below.lo_run, hi_run=below.hi_run, max_runs=max_sims - len(runs))
     lo, hi, hi_r = res.lo, res.hi, res.hi_run
     return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs), scan_ratio,
                            tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))

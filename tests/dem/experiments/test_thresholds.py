@@ -34,6 +34,25 @@ def _fake_motion(a, f):
     return SinePulse(a, f)
 
 
+@pytest.mark.parametrize("max_sims", [60, 30, 27])
+def test_stepping_below_the_scan_reports_only_simulated_ends(monkeypatch, max_sims):
+    # every scanned amplitude collapses (truth 0.25 g below a_min 0.3 g): the search steps down below the
+    # scan, even with the budget spent on a 25-point scan, and the bracket it reports was simulated at both ends
+    ran = []
+
+    def fake(args):
+        ran.append(args[4])
+        return Outcome(float(args[4]), args[4] >= 0.25, "rocking", None)
+
+    monkeypatch.setattr(thresholds, "_run_one", fake)
+    r = threshold(single_block(0.1, 0.4), 4.0, a_min_g=0.3, a_max_g=0.3 * 1.05 ** 24, scan_ratio=1.05, tol=0.01,
+                  workers=1, max_sims=max_sims)
+    lo, hi = r.bracket_g
+    assert lo in ran and hi in ran and lo < 0.25 <= hi
+    if max_sims == 60:
+        assert hi / lo - 1 <= 0.01
+
+
 def test_threshold_finds_lowest_edge_of_non_monotonic_outcome(monkeypatch):
     """Scan first, then bisect the lowest bracket: with collapse on [0.45, 0.78) and [0.9, inf) the
     answer is 0.45 (to 1 %), and the survival window above it is reported (a stand-in for the
