@@ -5,25 +5,53 @@ collapse and per-joint failure modes, thresholds, friction maps, studies and the
     >>> t = tilt("Sh06-Sd015")                 # a catalogue id, Specimen, PointedArch, Assembly or Model
     >>> s = shake("Sh02-Sd020", ground_motion(sine=4.0, amplitude=0.5))   # Hz and g, as the CLI
 """
-from analytic.records import ground_motion
-from dem.core.model import Model, as_model, from_assembly
-from dem.core.settings import Settings
-from dem.core.simulate import SimResult, simulate
-from dem.experiments.domain import dem_failure_domain
-from dem.experiments.friction_map import catalogue_map
-from dem.experiments.shake import ShakeProtocol, ShakeResult, shake
-from dem.experiments.thresholds import (
-    ThresholdResult,
-    failure_domain,
-    static_onset,
-    threshold,
-)
-from dem.experiments.tilt import TiltProtocol, TiltResult, tilt
-from dem.formats.shake import load_shake, save_shake
-from dem.formats.tilt import load_result, save_result
+from __future__ import annotations
 
-__all__ = [
-    "ground_motion", "Model", "as_model", "from_assembly", "Settings", "SimResult", "simulate", "dem_failure_domain",
-    "catalogue_map", "ShakeProtocol", "ShakeResult", "shake", "ThresholdResult", "failure_domain", "static_onset",
-    "threshold", "TiltProtocol", "TiltResult", "tilt", "load_shake", "save_shake", "load_result", "save_result",
-]
+import importlib
+from typing import TYPE_CHECKING
+
+# ruff: noqa: F401 (the names below are re-exported lazily)
+
+# public name -> its module, imported on first use: importing one submodule stays light
+_EXPORTS = {
+    "ground_motion": "analytic.records",
+    "Model": "dem.core.model", "as_model": "dem.core.model", "from_assembly": "dem.core.model",
+    "Settings": "dem.core.settings",
+    "SimResult": "dem.core.simulate", "simulate": "dem.core.simulate",
+    "dem_failure_domain": "dem.experiments.domain",
+    "catalogue_map": "dem.experiments.friction_map",
+    "ShakeProtocol": "dem.experiments.shake", "ShakeResult": "dem.experiments.shake", "shake": "dem.experiments.shake",
+    "ThresholdResult": "dem.experiments.thresholds", "failure_domain": "dem.experiments.thresholds", "static_onset": "dem.experiments.thresholds", "threshold": "dem.experiments.thresholds",
+    "TiltProtocol": "dem.experiments.tilt", "TiltResult": "dem.experiments.tilt", "tilt": "dem.experiments.tilt",
+    "load_shake": "dem.formats.shake", "save_shake": "dem.formats.shake",
+    "load_result": "dem.formats.tilt", "save_result": "dem.formats.tilt",
+}
+__all__ = list(_EXPORTS)
+
+if TYPE_CHECKING:  # the same names for type checkers and editors
+    from analytic.records import ground_motion
+    from dem.core.model import Model, as_model, from_assembly
+    from dem.core.settings import Settings
+    from dem.core.simulate import SimResult, simulate
+    from dem.experiments.domain import dem_failure_domain
+    from dem.experiments.friction_map import catalogue_map
+    from dem.experiments.shake import ShakeProtocol, ShakeResult, shake
+    from dem.experiments.thresholds import (
+        ThresholdResult,
+        failure_domain,
+        static_onset,
+        threshold,
+    )
+    from dem.experiments.tilt import TiltProtocol, TiltResult, tilt
+    from dem.formats.shake import load_shake, save_shake
+    from dem.formats.tilt import load_result, save_result
+
+
+def __getattr__(name: str):
+    if name in _EXPORTS:
+        return getattr(importlib.import_module(_EXPORTS[name]), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)
