@@ -112,7 +112,6 @@ def test_inadmissible_face_swap_falls_back_to_max_energy():
     """Sharp thick arch: the minimised layout has a hinge at the intrados apex, its face-swapped
     layout is not admissible (docs/physics/dynamics.md#5-impact); the mechanism chosen is admissible, opens the other
     way, and keeps at least as much energy as the mirrored layout (one of the candidates)."""
-    pytest.importorskip("analytic.limit_continuous", reason="limit analysis module not available")
     from analytic.linkage import minimised_four_bar
 
     fb = minimised_four_bar(get_specimen("Sh1-Sd015").arch)

@@ -1,6 +1,5 @@
 """Continuous-profile four-hinge analysis."""
 import math
-import warnings
 
 import numpy as np
 import pytest

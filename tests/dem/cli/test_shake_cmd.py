@@ -85,7 +85,6 @@ def test_threshold_json(tmp_path, capsys):
 
 
 def test_domain_engine_dem(tmp_path, capsys):
-    pytest.importorskip("analytic.linkage")
     rc = main(["domain", *SMALL, "--engine", "dem", "--freq", "5", "--json", "--workers", "1",
                "--plot", str(tmp_path / "d.png"), "--amax", "3"])
     assert rc == 0

@@ -7,7 +7,7 @@ import pytest
 from dem.experiments.compare_engines import ComparisonRow, compare_specimen, summary
 from dem.experiments.tilt_check import TiltCheck
 
-pytest.importorskip("mujoco")
+pytest.importorskip("mujoco", reason="the mujoco extra is not installed (pip install -e '.[mujoco]')")
 
 
 def _row(friction, lp, lams, hinges=(("L1", "intrados"),)):

@@ -114,7 +114,7 @@ def test_failing_case_recorded_others_complete(tmp_path):
 
 
 def test_dask_map_equals_local_map(tmp_path):
-    distributed = pytest.importorskip("distributed")
+    distributed = pytest.importorskip("distributed", reason="the cluster extra is not installed (pip install -e '.[cluster]')")
     local = _map(tmp_path, "local.h5", refine=2, extra=_syn(fail_mu=0.9))
     with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
                                   dashboard_address=None) as cluster:

@@ -1,16 +1,14 @@
 """Tilt test against the discrete limit analysis (docs/validation.md#4-no-sliding-tilt-against-the-lp) on a representative specimen;
 the 11 specimens x 2 configurations run in benchmarks/validate_dem.py."""
-import numpy as np
 import pytest
 
+import analytic.limit_discrete as lim
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt import TiltProtocol, tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU
-
-lim = pytest.importorskip("analytic.limit_discrete", reason="discrete limit analysis not available")
 
 SID = "Sh02-Sd020"
 

@@ -174,7 +174,7 @@ def test_keyboard_interrupt_keeps_finished_cases(tmp_path):
 
 
 def test_dask_local_cluster_gives_same_results_as_local_pool(tmp_path):
-    distributed = pytest.importorskip("distributed")
+    distributed = pytest.importorskip("distributed", reason="the cluster extra is not installed (pip install -e '.[cluster]')")
     cases = _cases(6)
     cases[4]["fail"] = True
     local = run_study(cases, FUNC, tmp_path / "local.h5", workers=2, progress=False)

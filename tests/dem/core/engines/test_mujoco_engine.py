@@ -4,7 +4,7 @@ validation shared with every engine is in test_engines_shared.py)."""
 import numpy as np
 import pytest
 
-pytest.importorskip("mujoco")
+pytest.importorskip("mujoco", reason="the mujoco extra is not installed (pip install -e '.[mujoco]')")
 
 from dem.core.engines import available_engines, get_engine  # noqa: E402
 from dem.core.engines.mujoco_engine import (  # noqa: E402
@@ -102,7 +102,7 @@ def test_contact_forces_balance_the_weight_at_rest():
         e.close()
 
 
-lim = pytest.importorskip("analytic.limit_discrete", reason="discrete limit analysis not available")
+import analytic.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tests below check against)
 
 
 # representative subset: the thinnest pointed arch free (PyBullet's worst case, -4 %) and the thickest
