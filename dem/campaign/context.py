@@ -1,7 +1,6 @@
 """What every campaign step gets (:class:`CampaignContext`) and the small file helpers they share."""
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -36,10 +35,10 @@ def pct(a: float, b: float) -> float:
 
 
 def write_json_atomic(path: Path, obj: dict) -> None:
-    from specimens.io import atomic_path
+    from specimens.io import atomic_path, to_json
 
     with atomic_path(path, overwrite=True) as tmp:
-        tmp.write_text(json.dumps(obj, indent=2, default=str))
+        tmp.write_text(to_json(obj, indent=2))
 
 
 def studies_dir(ctx: CampaignContext) -> Path:

@@ -15,7 +15,7 @@ import html
 import json
 from pathlib import Path
 
-from specimens.io import atomic_path
+from specimens.io import atomic_path, to_json
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}
@@ -110,7 +110,7 @@ def _write_h5(path: Path, manifest: dict, tables: dict[str, list[dict]]) -> None
         with h5py.File(tmp, "w") as f:
             f.attrs["parameters"] = json.dumps(manifest.get("parameters", {}))
             f.attrs["provenance"] = json.dumps(manifest.get("provenance", {}))
-            f.attrs["manifest"] = json.dumps(manifest, default=str)
+            f.attrs["manifest"] = to_json(manifest)
             g = f.create_group("tables")
             for name, rows in tables.items():
                 tg = g.create_group(name)
