@@ -8,12 +8,13 @@ rocking block, the four-bar and two-bar linkages with impact, failure domains, g
 """
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING
+
+from specimens.lazy import lazy_exports
 
 # ruff: noqa: F401 (the names below are re-exported lazily)
 
-# public name -> its module, imported on first use: importing one submodule stays light
+# public name -> its module (imported on first use)
 _EXPORTS = {
     "FailureDomain": "analytic.domain", "failure_domain": "analytic.domain",
     "Response": "analytic.dynamics", "simulate": "analytic.dynamics",
@@ -46,11 +47,4 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
 
 
-def __getattr__(name: str):
-    if name in _EXPORTS:
-        return getattr(importlib.import_module(_EXPORTS[name]), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(__all__)
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)

@@ -7,12 +7,13 @@ collapse and per-joint failure modes, thresholds, friction maps, studies and the
 """
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING
+
+from specimens.lazy import lazy_exports
 
 # ruff: noqa: F401 (the names below are re-exported lazily)
 
-# public name -> its module, imported on first use: importing one submodule stays light
+# public name -> its module (imported on first use)
 _EXPORTS = {
     "ground_motion": "analytic.records",
     "Model": "dem.core.model", "as_model": "dem.core.model", "from_assembly": "dem.core.model",
@@ -47,11 +48,4 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
     from dem.formats.tilt import load_result, save_result
 
 
-def __getattr__(name: str):
-    if name in _EXPORTS:
-        return getattr(importlib.import_module(_EXPORTS[name]), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(__all__)
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
