@@ -18,7 +18,6 @@ from typing import Sequence
 
 import numpy as np
 
-from analytic.dynamics import linearised_collapse, simulate
 from analytic.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.mechanism import Mechanism
 from analytic.search import midpoint, search
@@ -101,6 +100,10 @@ class FailureDomain:
 
 
 def _classify(mech: Mechanism, kind: str, a: float, x: float, restitution: float | None) -> str:
+    from analytic.dynamics import (
+        simulate,  # scipy's integrators: imported when a domain is computed
+    )
+
     r = simulate(mech, make_input(kind, a, x, abs(mech.onset)), restitution=restitution, record=False)
     if not r.collapsed:
         return "survival"
@@ -145,6 +148,8 @@ def domain_column(mech: Mechanism, kind: str, x: float, a_min: float, a_max: flo
 
 
 def _linearised_threshold(mech: Mechanism, kind: str, x: float, a_min: float, a_max: float, tol: float):
+    from analytic.dynamics import linearised_collapse
+
     f = lambda a: linearised_collapse(mech, make_input(kind, a, x, abs(mech.onset)))  # noqa: E731
     if not f(a_max):
         return None

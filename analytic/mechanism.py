@@ -29,7 +29,6 @@ from functools import cached_property
 from typing import NamedTuple, Sequence
 
 import numpy as np
-from scipy.optimize import brentq
 
 from specimens.constants import G
 
@@ -175,6 +174,9 @@ class Mechanism:
         prev = grid[0]
         for p in grid[1:]:
             if self.dpotential(float(p)) <= 0:
+                from scipy.optimize import (
+                    brentq,  # imported on first use: the CLI imports this module
+                )
                 return float(brentq(self.dpotential, prev, float(p), xtol=1e-14, rtol=1e-13))
             prev = float(p)
         return float(lim)
