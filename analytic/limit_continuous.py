@@ -18,7 +18,8 @@ segments), vectorised over batches of layouts; the layout returned carries exact
 :class:`~analytic.layout.MacroBlock` properties (from :mod:`specimens.sections`).
 
 Minimisation: exhaustive vectorised search over a grid of hinge positions for both alternating
-face patterns, then Nelder-Mead refinement (bounded) from the best admissible grid layouts.
+face patterns, then a pattern search (the full 3^4 stencil, step halved when nothing improves) from the best
+admissible grid layouts.
 Options: ``min_spacing`` (least distance in ``u`` [rad] between consecutive hinges) and
 ``effective_thickness`` (fraction f of ``t``: the ring is replaced by the ring of thickness
 ``f t`` about the same mean radius ``Rp`` and the same centres, its self-weight included).

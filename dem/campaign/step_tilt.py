@@ -28,9 +28,8 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
 
     frictions = tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
-    # the tilt test's protocol (LP-started bisection to 0.5 %, first-bracket ends simulated last), quick
-    # or not: 3 simulations per test on 20 of the 22 tests of the full step, where the friction map's
-    # protocol (2 %, both ends first; the quick step's until then) took 4
+    # the tilt test's own protocol (LP start, 0.5 %), quick or not: 3 simulations per test
+    # (docs/timings.md#2-the-full-campaign)
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
     cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng)
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
@@ -127,7 +126,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
 def _collapse_figures(rows: list[dict], records: dict, cases: dict, d: Path) -> list[dict]:
     """The arch at collapse (joints coloured by state) and the lambda bracket history of the first
     specimen that rocks and the first that slides at the reference friction; the collapsing
-    simulation is replayed from the study (:func:`dem.experiments.friction_map.replay_tilt`)."""
+    simulation is replayed from the study (:func:`dem.studies.cases.replay_tilt`)."""
     from dem.plotting.tilt import save_tilt_figure
     from dem.studies.cases import replay_tilt
 

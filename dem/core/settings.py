@@ -39,7 +39,7 @@ class Settings:
 
     inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0
     inflate_normal: bool = False  # False: vertices pushed radially from the piece centroid; True: along face normals (drifts)
-    contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (0.16-0.25 mm in 5 s)
+    contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (docs/decisions/006-solver-settings.md#contacts)
     friction_erp: float = 1.0  # friction drift correction; lower values let blocks near the friction limit creep
 
     # detection (docs/physics/dem.md#5-collapse-criterion)

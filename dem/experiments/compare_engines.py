@@ -1,9 +1,11 @@
 """Engine cross-check: the tilt test of a specimen run with each engine, at no sliding and at
 the reference friction, next to the discrete limit analysis (LP) of the same blocks.
 
-At no sliding the LP is exact for the discretised arch (docs/validation.md#4-no-sliding-tilt-against-the-lp), so each engine's error is
-measured against it. With Coulomb friction the associative LP is no bound (docs/physics/limit-analysis.md#6-discrete-arch-static-lp-with-friction); its
-value is reported for orientation only, and the engines are compared with each other.
+At no sliding the LP is exact for the discretised arch
+(docs/validation.md#4-no-sliding-tilt-against-the-lp), so each engine's error is measured against
+it. With Coulomb friction the associative LP is no bound
+(docs/physics/limit-analysis.md#6-discrete-arch-static-lp-with-friction); its value is reported
+for orientation only, and the engines are compared with each other.
 """
 from __future__ import annotations
 

@@ -9,12 +9,13 @@ MuJoCo; see the engines). Both give the same relative motion; results are in the
 Run: the motion, then a zero tail (``ShakeProtocol.tail`` [s]) so that a rocking arch either
 comes back to rest or falls. Poses are recorded every ``ShakeProtocol.record_every`` [s].
 
-**Collapse in a shake** (docs/physics/dem.md#5-collapse-criterion, no per-specimen tuning): some body point has moved more than
-``collapse_fraction x size`` (size = ring thickness of an arch, height of a single block) while
-that body still moves faster than ``Settings.collapse_speed``. The fraction is 1.0 by default,
-larger than the 0.06 of the tilt test: under a pulse a mechanism may open well past its static
-limit during the input and still close again (docs/physics/dynamics.md#6-time-integration-and-the-collapse-rule: passing ``phi_cr`` while the input acts
-is not collapse), whereas a body point displaced by a full ring thickness (a block: by its
+**Collapse in a shake** (docs/physics/dem.md#5-collapse-criterion, no per-specimen tuning): some
+body point has moved more than ``collapse_fraction x size`` (size = ring thickness of an arch,
+height of a single block) while that body still moves faster than ``Settings.collapse_speed``.
+The fraction is 1.0 by default, larger than the 0.06 of the tilt test: under a pulse a mechanism
+may open well past its static limit during the input and still close again
+(docs/physics/dynamics.md#6-time-integration-and-the-collapse-rule: passing ``phi_cr`` while the
+input acts is not collapse), whereas a body point displaced by a full ring thickness (a block: by its
 height, i.e. rotated ~2 x its slenderness angle) is falling.
 
 **First impact / rebound**: from the horizontal displacement ``u(t)`` of the crown body's

@@ -13,9 +13,10 @@ Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horiz
   with ``start="lp"``, the default when the blocks are known, the static LP of the same blocks,
   :func:`lp_guess`; otherwise a fast continuous ramp) and bisected until the bracket is narrower
   than ``tol`` relative; an end of the first bracket is simulated only if the bisection ends on
-  it (``probe_ends``), so both ends of the final bracket were simulated. The answer is the upper end of the
-  bracket (first collapsing level); non-monotonic outcomes near the threshold (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold) make
-  thresholds reproducible to about +-1 %.
+  it (``probe_ends``), so both ends of the final bracket were simulated. The answer is the upper
+  end of the bracket (first collapsing level); non-monotonic outcomes near the threshold
+  (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold) make thresholds reproducible
+  to about +-1 %.
 * ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time;
   the answer is the step during which the collapsing motion started (:func:`onset_time`).
 * ``ramp``: one simulation at a constant rate; lambda read at the onset of the collapsing

@@ -22,8 +22,9 @@ IDS = ["Sh02-Sd015", "Sh06-Sd020", "Sh1-Sd025"]
 
 
 def _lambda_instantaneous_centres(points, blocks):
-    """Virtual work with instantaneous centres (docs/physics/limit-analysis.md#2-the-four-hinge-mechanism), written independently of the linkage:
-    block 1 about H1, block 2 about C2 = H1H2 x H4H3, block 3 about H4."""
+    """Virtual work with instantaneous centres (docs/physics/limit-analysis.md#2-the-four-hinge-mechanism),
+    written independently of the linkage: block 1 about H1, block 2 about C2 = H1H2 x H4H3, block 3
+    about H4."""
     H1, H2, H3, H4 = (np.asarray(p, float) for p in points)
     d1, d2 = H2 - H1, H3 - H4
     # C2 = H1 + s d1 = H4 + t d2

@@ -20,7 +20,8 @@ def test_scan_grid_spacing():
 
 
 def test_bands_keep_survival_windows():
-    # collapse at 0.5, survival again at 0.8-0.9 (the Sh02-Sd020 pattern, docs/physics/dem.md#10-shake-thresholds-and-dem-failure-domains), collapse from 1.0
+    # collapse at 0.5, survival again at 0.8-0.9, collapse from 1.0 (the Sh02-Sd020 pattern,
+    # docs/physics/dem.md#10-shake-thresholds-and-dem-failure-domains)
     runs = [Outcome(a, c, "rocking", None) for a, c in
             [(0.3, False), (0.4, False), (0.5, True), (0.6, True), (0.8, False), (0.9, False), (1.0, True)]]
     b = _bands(runs, 0.45)

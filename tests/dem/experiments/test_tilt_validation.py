@@ -27,7 +27,7 @@ def case():
 # bits (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold): with levels
 # ramped 1 s instead of 0.5 s this specimen collapsed spuriously at 0.3441 (-2.0 %) in a disordered
 # mechanism and failed the last two checks below, while the catalogue as a whole scored the same
-# (benchmarks/validate_dem.py; dem/core/settings.py gives the catalogue figures of the defaults).
+# (benchmarks/validate_dem.py; the defaults' figures: docs/validation.md#4-no-sliding-tilt-against-the-lp).
 
 
 @pytest.mark.slow
@@ -35,7 +35,7 @@ def test_no_sliding_lambda_matches_lp(case):
     asm, m, ns = case
     lp = lim.solve_lp(asm, float("inf"), float("inf"))
     # the issue's tolerance: 3 % (PyBullet's measured bias with the defaults: mean 0.63 %, 22 of 22
-    # catalogue cases within 3 %, 19-22 over seven runs with different last bits, see dem/core/settings.py)
+    # catalogue cases within 3 %, 19-22 over seven runs: docs/validation.md#4-no-sliding-tilt-against-the-lp)
     assert abs(ns.lam - lp.lam) / lp.lam <= 0.03
 
 
@@ -71,8 +71,9 @@ def test_halving_dt(case):
 
 @pytest.mark.slow
 def test_halving_the_hold_ramp_rate(case):
-    # docs/validation.md#8-insensitivity-to-time-step-and-rate / the issue: halving the hold protocol's rate (TiltProtocol.slowed(2): ramp, hold and
-    # the rest rule's start and window twice as long) changes lambda by < 2 %. Measured with the
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate / the issue: halving the hold
+    # protocol's rate (TiltProtocol.slowed(2): ramp, hold and the rest rule's start and window
+    # twice as long) changes lambda by < 2 %. Measured with the
     # defaults (benchmarks/validate_dem.py --sensitivity): -0.47 % here and on Sh06-Sd015 (the same
     # with the rest rule's times left at 0.5 s and 0.1 s); from the former first bracket (0.95, 1.01),
     # -1.5 % here (0.3441 against 0.3494: the spurious collapse described above), +0.8 % on Sh06-Sd015
