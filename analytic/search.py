@@ -113,6 +113,8 @@ def search(evaluate: Callable[[float], Any], lo: float, hi: float, tol: float, *
     """
     if ends not in ("first", "last"):
         raise ValueError(f"ends must be 'first' or 'last', got {ends!r}")
+    if (hi_run is None and up is None) or (lo_run is None and down is None):
+        raise ValueError("a guessed end (no run given) needs its way out: up for hi, down for lo")
     b = Bracket(lo, hi, tol, rule, geometric, lo_run, hi_run)
     runs = downs = 0
 

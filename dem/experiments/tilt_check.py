@@ -49,7 +49,7 @@ class TiltCheck:
 
     @property
     def err_pct(self) -> float:
-        """:attr:`rel_err` in percent."""
+        """:attr:`rel_err` in percent (computed as the campaign's tables always were, so they stay bit-identical)."""
         return 100 * (self.lam - self.lp_lam) / self.lp_lam
 
     @property

@@ -121,3 +121,10 @@ def test_bracket_steps_as_a_caller_would():
         b.take(x, x >= math.sqrt(2), x)
         n += 1
     assert b.lo < math.sqrt(2) <= b.hi and n == math.ceil(math.log2(math.log(2) / math.log(1.01)))
+
+
+def test_a_guessed_end_needs_a_way_out():
+    with pytest.raises(ValueError, match="up for hi"):
+        search(bool, 0.5, 1.0, 0.01, lo_run=False)
+    with pytest.raises(ValueError, match="down for lo"):
+        search(bool, 0.5, 1.0, 0.01, hi_run=True)
