@@ -21,14 +21,31 @@ Face = Literal["intrados", "extrados"]
 
 @dataclass(frozen=True)
 class Hinge:
-    """A hinge at face ``face`` of the radial cut at polar angle ``psi`` [rad] of half ``side``."""
+    """A hinge at face ``face`` of the radial cut at polar angle ``psi`` [rad] of half ``side``.
+
+    ``contact`` in (0, 1]: the joint touches within its central fraction, so the hinge sits at
+    that fraction's end, ``contact x t / 2`` from the mean radius (docs/physics/limit-analysis.md#12-effective-contact).
+    An extrados hinge beyond the intrados apex (``psi > psi_i``) is on the keystone-fan cut
+    from the intrados apex.
+    """
 
     side: int
     psi: float
     face: Face
+    contact: float = 1.0
 
     def point(self, arch: PointedArch) -> np.ndarray:
-        r = arch.Ri if self.face == "intrados" else arch.Re
+        if self.face == "extrados" and self.psi > arch.psi_i:
+            e_pt = arch.point(self.psi, arch.Re, self.side)
+            if self.contact == 1.0:
+                return e_pt
+            i_pt = np.array([0.0, arch.Ri * np.sin(arch.psi_i)])
+            mid = 0.5 * (i_pt + e_pt)
+            return mid + self.contact * (e_pt - mid)
+        if self.contact == 1.0:
+            r = arch.Ri if self.face == "intrados" else arch.Re
+        else:
+            r = arch.Rp + (-0.5 if self.face == "intrados" else 0.5) * self.contact * arch.t
         return arch.point(self.psi, r, self.side)
 
     def polar_about_origin(self, arch: PointedArch) -> float:
@@ -37,7 +54,7 @@ class Hinge:
 
     def swapped(self) -> "Hinge":
         """The same cut with the hinge on the opposite face."""
-        return Hinge(self.side, self.psi, "extrados" if self.face == "intrados" else "intrados")
+        return Hinge(self.side, self.psi, "extrados" if self.face == "intrados" else "intrados", self.contact)
 
 
 @dataclass(frozen=True)

@@ -20,9 +20,12 @@ segments), vectorised over batches of layouts; the layout returned carries exact
 Minimisation: exhaustive vectorised search over a grid of hinge positions for both alternating
 face patterns, then a pattern search (the full 3^4 stencil, step halved when nothing improves) from the best
 admissible grid layouts.
-Options: ``min_spacing`` (least distance in ``u`` [rad] between consecutive hinges) and
-``effective_thickness`` (fraction f of ``t``: the ring is replaced by the ring of thickness
-``f t`` about the same mean radius ``Rp`` and the same centres, its self-weight included).
+Options: ``min_spacing`` (least distance in ``u`` [rad] between consecutive hinges);
+``contact`` (fraction c of each cut that touches: the hinges sit at the ends of the cut's
+central fraction c, the self-weight stays that of the full ring); ``effective_thickness``
+(fraction f of ``t``: the ring is replaced by the ring of thickness ``f t`` about the same mean
+radius ``Rp`` and the same centres, its self-weight included — the thinner-ring rule of the
+literature, docs/physics/limit-analysis.md#12-effective-contact).
 """
 from __future__ import annotations
 
@@ -35,6 +38,7 @@ import numpy as np
 
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock, continuous_layout
 from analytic.limit_discrete import four_hinge_lambda
+from specimens.blocks import check_contact
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import Arc, Segment, region_properties
@@ -72,8 +76,9 @@ def _seg_green(p0: np.ndarray, p1: np.ndarray) -> np.ndarray:
 class RingCuts:
     """The cut family and the cumulative section function of one arch (see module doc)."""
 
-    def __init__(self, arch: PointedArch):
+    def __init__(self, arch: PointedArch, contact: float = 1.0):
         self.arch = arch
+        self.contact = contact
         self.e, self.Ri, self.Re = arch.e, arch.Ri, arch.Re
         self.psi_i, self.psi_e = arch.psi_i, arch.psi_e
         self.U = 2 * self.psi_e
@@ -95,6 +100,14 @@ class RingCuts:
         se = np.where(u <= self.psi_e, -1.0, 1.0)
         E = np.stack([se * (-e + self.Re * np.cos(pe)), self.Re * np.sin(pe)], axis=-1)
         return I, E
+
+    def contact_ends(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Ends (..., 2) of the central ``contact`` fraction of the cut at ``u``: the hinge points."""
+        I, E = self.ends(u)
+        if self.contact == 1.0:
+            return I, E
+        mid = 0.5 * (I + E)
+        return mid + self.contact * (I - mid), mid + self.contact * (E - mid)
 
     def cumulative(self, u: np.ndarray) -> np.ndarray:
         """(A, Sx, Sy) per unit width of the ring from the left springing to the cut at ``u``."""
@@ -144,13 +157,13 @@ class RingCuts:
         """The :class:`Hinge` at cut ``u`` (fan cuts: apex intrados / extrados arc angle)."""
         if face == "intrados":
             if u <= self.psi_i:
-                return Hinge(-1, float(u), face)
+                return Hinge(-1, float(u), face, self.contact)
             if u >= self.U - self.psi_i:
-                return Hinge(1, float(self.U - u), face)
-            return Hinge(1, float(self.psi_i), face)
+                return Hinge(1, float(self.U - u), face, self.contact)
+            return Hinge(1, float(self.psi_i), face, self.contact)
         if u <= self.psi_e:
-            return Hinge(-1, float(u), face)
-        return Hinge(1, float(self.U - u), face)
+            return Hinge(-1, float(u), face, self.contact)
+        return Hinge(1, float(self.U - u), face, self.contact)
 
     def u_of_hinge(self, h: Hinge) -> float:
         """Arch coordinate of a hinge's cut (an intrados hinge at ``psi_i`` is on that half's apex cut)."""
@@ -170,7 +183,7 @@ def _check_density(density: float) -> None:
 
 def _lambda_u(ring: RingCuts, u: np.ndarray, faces: np.ndarray, load_sign: int = 1):
     """Vectorised multiplier of layouts ``u`` (..., 4) with face indices ``faces`` (..., 4)."""
-    I, E = ring.ends(u)
+    I, E = ring.contact_ends(u)
     pts = np.stack([I, E], axis=-2)  # (..., 4, 2 faces, 2)
     f = np.broadcast_to(faces, u.shape)
     H = np.take_along_axis(pts, f[..., None, None], axis=-2)[..., 0, :]
@@ -193,7 +206,10 @@ def lambda_of_hinges(arch: PointedArch, hinges, density: float = 500.0, load_sig
     ``density`` does not change the multiplier (kept for a uniform signature).
     """
     _check_density(density)
-    ring = RingCuts(arch)
+    contacts = {h.contact for h in hinges}
+    if len(contacts) != 1:
+        raise ArchdemInputError(f"the four hinges must share one effective contact, got {sorted(contacts)}")
+    ring = RingCuts(arch, check_contact(contacts.pop()))
     u = np.array([ring.u_of_hinge(h) for h in hinges]) if cuts is None else np.asarray(cuts, float)
     if np.any(np.diff(u) <= 0):
         raise ArchdemInputError("hinges must be given left to right at distinct cuts")
@@ -202,9 +218,11 @@ def lambda_of_hinges(arch: PointedArch, hinges, density: float = 500.0, load_sig
     return float(w.lam) if bool(w.admissible) else math.inf
 
 
-def layout_of(arch: PointedArch, u: np.ndarray, faces: tuple[str, ...], density: float) -> FourHingeLayout:
-    """The :class:`FourHingeLayout` of cuts ``u`` (4,) with exact macro-block properties."""
-    ring = RingCuts(arch)
+def layout_of(arch: PointedArch, u: np.ndarray, faces: tuple[str, ...], density: float,
+              contact: float = 1.0) -> FourHingeLayout:
+    """The :class:`FourHingeLayout` of cuts ``u`` (4,) with exact macro-block properties (hinges
+    at the ends of each cut's central ``contact`` fraction)."""
+    ring = RingCuts(arch, contact)
     hinges = tuple(ring.hinge(float(x), f) for x, f in zip(u, faces))
     radial = all(x <= ring.psi_i or x >= ring.U - ring.psi_i for x in u)
     if radial and np.all(np.diff(u) > 0) and all(
@@ -231,7 +249,8 @@ class ContinuousResult:
     ``lam``; ``hinges`` (4 :class:`Hinge`, left to right); ``u``: their arch coordinates [rad];
     ``faces``; ``layout`` (macro-block masses [kg], centroids [m], inertias [kg m^2] of the
     effective ring); ``converged`` (local refinement succeeded and did not end above the grid
-    minimum); ``stands`` (``lam >= 0``); ``message``; ``effective_thickness``; ``min_spacing``.
+    minimum); ``stands`` (``lam >= 0``); ``message``; ``effective_thickness``; ``min_spacing``;
+    ``contact``.
     """
 
     lam: float
@@ -245,6 +264,7 @@ class ContinuousResult:
     effective_thickness: float = 1.0
     min_spacing: float = 0.0
     load_sign: int = 1
+    contact: float = 1.0
 
     def polar_angles(self, arch: PointedArch) -> np.ndarray:
         """Polar angles about O of the hinge points [rad] (0 = right springing); ``arch`` as analysed."""
@@ -266,7 +286,7 @@ def _grid_search(ring: RingCuts, n: int, min_spacing: float, load_sign: int):
     gathered for the ``C(n, 4)`` layouts.
     """
     grid = np.linspace(0.0, ring.U, n)
-    I, E = ring.ends(grid)
+    I, E = ring.contact_ends(grid)
     pts = np.stack([I, E], axis=1)  # (n, 2 faces, 2)
     nrm = ring.normal(grid)
     F = ring.cumulative(grid)
@@ -331,11 +351,13 @@ def continuous_collapse(
     load_sign: int = 1,
     grid: int = 36,
     n_starts: int = 4,
+    contact: float = 1.0,
 ) -> ContinuousResult:
     """Minimum collapse multiplier of the continuous ring over admissible four-hinge layouts.
 
     ``min_spacing`` [rad of arch coordinate]: least spacing between consecutive hinges;
-    ``effective_thickness``: fraction of ``t`` kept (about ``Rp``). A ring that cannot stand
+    ``effective_thickness``: fraction of ``t`` kept (about ``Rp``); ``contact``: fraction of each
+    cut that touches (hinges within it, full self-weight). A ring that cannot stand
     under self-weight gives ``lam < 0`` and ``stands = False``; a refinement that fails is
     reported with the best value found (``converged = False``) and a warning.
     """
@@ -345,14 +367,16 @@ def continuous_collapse(
     if not (math.isfinite(min_spacing) and min_spacing >= 0):
         raise ArchdemInputError(f"minimum hinge spacing must be >= 0 rad, got {min_spacing!r}")
     ar = effective_arch(arch, effective_thickness)
-    ring = RingCuts(ar)
+    contact = check_contact(contact)
+    ring = RingCuts(ar, contact)
     if 3 * min_spacing >= ring.U:
         raise ArchdemInputError(f"minimum hinge spacing {min_spacing:g} rad leaves no room for four hinges "
                                 f"(arch coordinate length {ring.U:.4g} rad)")
     cands = _grid_search(ring, grid, min_spacing, load_sign)
     if not cands:
         return ContinuousResult(math.inf, None, np.full(4, np.nan), PATTERNS[0], None, False, True,  # type: ignore[arg-type]
-                                "no admissible four-hinge layout found", effective_thickness, min_spacing, load_sign)
+                                "no admissible four-hinge layout found", effective_thickness, min_spacing, load_sign,
+                                contact)
     grid_best = cands[0][0]
     best = (grid_best, cands[0][1], cands[0][2])
     any_success = False
@@ -376,9 +400,9 @@ def continuous_collapse(
         warnings.warn(f"continuous_collapse: {msg}", RuntimeWarning, stacklevel=2)
     if lam < 0:
         msg = f"the ring cannot stand under self-weight (lambda = {lam:.4g} < 0)" + ("" if converged else "; " + msg)
-    layout = layout_of(ar, u, pat, density)
+    layout = layout_of(ar, u, pat, density, contact)
     return ContinuousResult(lam, layout.hinges, u, pat, layout, converged, lam >= 0, msg,
-                            float(effective_thickness), float(min_spacing), load_sign)
+                            float(effective_thickness), float(min_spacing), load_sign, contact)
 
 
 def hinge_polar_angles(arch: PointedArch, hinges) -> np.ndarray:

@@ -12,10 +12,11 @@ associative flow).
   inequalities), solved by HiGHS. The collapse mechanism is read from the LP duals (virtual
   velocities of the bodies) and each joint is classified (see :data:`JOINT_STATES`).
 
-**Effective contact** (``contact_fraction`` f in (0, 1]): every joint's contact is shrunk to the
-central fraction f of its length (both end points moved towards the joint's mid-point); the
-hinges of the enumeration and the force points of the LP are these shrunk end points. Masses
-are unchanged.
+**Effective contact** (the assembly's ``contact`` c in (0, 1], see
+:func:`specimens.blocks.discretise`): every joint touches within the central fraction c of its
+length, or within its own band in an imperfect realisation (:mod:`specimens.imperfection`); the
+hinges of the enumeration and the force points of the LP are the ends of that band
+(``Joint.contact_points``). Masses are those of the full blocks.
 
 The four-hinge kernel :func:`four_hinge_lambda` is shared with the continuous analysis.
 """
@@ -128,23 +129,10 @@ def four_hinge_lambda(
 # ---------------------------------------------------------------------------------------------
 # joints and contact points of an assembly
 # ---------------------------------------------------------------------------------------------
-def _check_fraction(contact_fraction: float) -> float:
-    f = float(contact_fraction)
-    if not (math.isfinite(f) and 0 < f <= 1):
-        raise ArchdemInputError(f"contact fraction must be in (0, 1], got {contact_fraction!r}")
-    return f
-
-
 def _check_sign(load_sign: int) -> int:
     if load_sign not in (1, -1):
         raise ArchdemInputError(f"load_sign must be +1 or -1, got {load_sign!r}")
     return int(load_sign)
-
-
-def contact_corners(p_i: np.ndarray, p_e: np.ndarray, fraction: float) -> tuple[np.ndarray, np.ndarray]:
-    """End points of a joint shrunk to its central ``fraction`` (intrados end, extrados end)."""
-    mid = 0.5 * (p_i + p_e)
-    return mid + fraction * (p_i - mid), mid + fraction * (p_e - mid)
 
 
 @dataclass(frozen=True)
@@ -168,13 +156,13 @@ class ContactModel:
     mu: np.ndarray
 
 
-def contact_model(assembly: Assembly, mu_joint: float, mu_base: float, contact_fraction: float = 1.0) -> ContactModel:
-    """The LP model of an assembly: block-block joints get ``mu_joint``, base joints ``mu_base``."""
-    f = _check_fraction(contact_fraction)
+def contact_model(assembly: Assembly, mu_joint: float, mu_base: float) -> ContactModel:
+    """The LP model of an assembly: block-block joints get ``mu_joint``, base joints ``mu_base``;
+    force points at the ends of each joint's contact."""
     for name, mu in (("mu_joint", mu_joint), ("mu_base", mu_base)):
         if not (isinstance(mu, (int, float, np.floating)) and mu >= 0 and not math.isnan(mu)):
             raise ArchdemInputError(f"{name} must be a number >= 0 (inf allowed), got {mu!r}")
-    p1, p2 = zip(*(contact_corners(j.p_i, j.p_e, f) for j in assembly.joints))
+    p1, p2 = zip(*(j.contact_points for j in assembly.joints))
     return ContactModel(
         body_names=tuple(b.name for b in assembly.bodies),
         mass=np.array([b.mass for b in assembly.bodies]),
@@ -217,7 +205,7 @@ class LPResult:
     load_sign: int = 1
     mu_joint: float = math.inf
     mu_base: float = math.inf
-    contact_fraction: float = 1.0
+    contact: float = 1.0
 
     @property
     def success(self) -> bool:
@@ -278,7 +266,7 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
     res = linprog(cost, A_ub=A_ub, b_ub=b_ub, A_eq=A, b_eq=rhs, bounds=bounds, method="highs",
                   options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
     common = dict(load_sign=s, mu_joint=float(np.nanmax(model.mu)) if nj else math.inf,
-                  mu_base=math.inf, contact_fraction=1.0)
+                  mu_base=math.inf, contact=1.0)
     if res.status == 2:
         return LPResult(math.nan, 2, "infeasible: no equilibrium for any horizontal load "
                         "(the structure cannot stand under self-weight)", False, {}, {}, {}, {}, **common)
@@ -344,20 +332,20 @@ def solve_lp(
     assembly: Assembly,
     mu_joint: float,
     mu_base: float,
-    contact_fraction: float = 1.0,
     load_sign: int = +1,
 ) -> LPResult:
     """Static limit analysis of a discretised arch: the largest ``lambda`` with equilibrium.
 
     ``mu_joint`` (block-block) and ``mu_base`` (block-base) are Coulomb friction coefficients
-    (``float('inf')`` = no sliding); ``contact_fraction`` shrinks every joint to its central part.
+    (``float('inf')`` = no sliding); the force points are the ends of each joint's contact
+    (the assembly's ``contact``).
     Geometry that cannot stand under self-weight gives ``stands = False`` (``lam < 0`` or an
     infeasible LP with ``lam = nan``), never an exception.
     """
-    model = contact_model(assembly, mu_joint, mu_base, contact_fraction)
+    model = contact_model(assembly, mu_joint, mu_base)
     res = solve_contact_lp(model, load_sign, length_scale=assembly.arch.Rp)
     return LPResult(res.lam, res.status, res.message, res.stands, res.joint_states, res.joint_hinge_face,
-                    res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(contact_fraction))
+                    res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(assembly.contact))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -370,7 +358,7 @@ class KinematicResult:
     ``hinges``: four ``(joint_name, face)`` left to right; ``layout``: the discrete macro-blocks
     (masses, centroids and centroidal inertias [kg m^2] of the bodies they contain) with
     :class:`~analytic.layout.Hinge` on the joints' radial cuts (the hinge *points* used are the
-    joint corners, shrunk when ``contact_fraction < 1``); ``hinge_points`` (4, 2) [m];
+    ends of the joints' contact, within the corners when ``contact < 1``); ``hinge_points`` (4, 2) [m];
     ``theta``: rotation rates of the three macro-blocks (block 1 = +-1); ``n_admissible``:
     number of admissible layouts found; ``stands``: ``lam >= 0``.
     """
@@ -385,7 +373,7 @@ class KinematicResult:
     stands: bool
     message: str
     load_sign: int = 1
-    contact_fraction: float = 1.0
+    contact: float = 1.0
     joints: tuple[int, ...] = field(default=())
 
 
@@ -400,16 +388,17 @@ def _macro_block(bodies: Sequence, lo: int, hi: int) -> MacroBlock:
     return MacroBlock(M, C, inertia)
 
 
-def enumerate_mechanisms(assembly: Assembly, contact_fraction: float = 1.0, load_sign: int = +1) -> KinematicResult:
-    """Minimum ``lambda`` over all admissible four-hinge mechanisms at joint corners (no sliding)."""
-    f = _check_fraction(contact_fraction)
+def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicResult:
+    """Minimum ``lambda`` over all admissible four-hinge mechanisms at the ends of the joints'
+    contact (no sliding)."""
+    f = float(assembly.contact)
     s = _check_sign(load_sign)
     joints = assembly.joints
     nj = len(joints)
     if nj < 4:
         raise ArchdemInputError("a four-hinge mechanism needs at least 4 joints")
     L = assembly.arch.Rp
-    corners = np.array([contact_corners(j.p_i, j.p_e, f) for j in joints]) / L  # (nj, 2 faces, 2)
+    corners = np.array([j.contact_points for j in joints]) / L  # (nj, 2 faces, 2)
     normals = np.array([j.normal for j in joints])
     m = np.array([b.mass for b in assembly.bodies])
     cxy = np.array([b.centroid for b in assembly.bodies]) / L
@@ -441,7 +430,7 @@ def enumerate_mechanisms(assembly: Assembly, contact_fraction: float = 1.0, load
     k = int(np.argmin(lam))
     jj, ff = J[k], Fc[k]
     hinges = tuple((joints[q].name, FACES[fc]) for q, fc in zip(jj, ff))
-    hinge_objs = tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc]) for q, fc in zip(jj, ff))
+    hinge_objs = tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc], f) for q, fc in zip(jj, ff))
     blocks = tuple(_macro_block(assembly.bodies, int(lo[k, i]), int(hi[k, i])) for i in range(3))
     lam_k = float(lam[k])
     msg = "ok" if lam_k >= 0 else f"the arch cannot stand under self-weight (lambda = {lam_k:.4g} < 0)"

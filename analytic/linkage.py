@@ -44,12 +44,12 @@ def _cross(ax: float, ay: float, bx: float, by: float) -> float:
 # ---------------------------------------------------------------------------------------------
 # ring material (exact region properties between cuts of the arch coordinate u)
 # ---------------------------------------------------------------------------------------------
-def _ring(arch: PointedArch):
+def _ring(arch: PointedArch, contact: float = 1.0):
     from analytic.limit_continuous import (
         RingCuts,  # the cut family of the continuous analysis
     )
 
-    return RingCuts(arch)
+    return RingCuts(arch, contact)
 
 
 @lru_cache(maxsize=4096)
@@ -261,7 +261,7 @@ def _orient(fb: FourBar) -> FourBar:
 
 
 def _mirror_hinges(hinges) -> tuple[Hinge, ...]:
-    return tuple(Hinge(-h.side, h.psi, h.face) for h in reversed(hinges))
+    return tuple(Hinge(-h.side, h.psi, h.face, h.contact) for h in reversed(hinges))
 
 
 def mirror_layout(layout: FourHingeLayout) -> FourHingeLayout:
@@ -295,7 +295,6 @@ def arch_four_bar(arch: PointedArch, layout: FourHingeLayout | Sequence[Hinge], 
     the apex on a keystone-fan cut (the hinge alone does not say how the keystone is shared);
     by default from the hinges.
     """
-    ring = _ring(arch)
     if cuts is None and isinstance(layout, CutLayout):
         cuts = layout.cuts
     if isinstance(layout, FourHingeLayout):
@@ -304,12 +303,16 @@ def arch_four_bar(arch: PointedArch, layout: FourHingeLayout | Sequence[Hinge], 
         hinges, blocks = tuple(layout), None
     if len(hinges) != 4:
         raise ArchdemInputError("a four-bar needs four hinges")
+    contacts = {h.contact for h in hinges}
+    if len(contacts) != 1:
+        raise ArchdemInputError(f"the four hinges must share one effective contact, got {sorted(contacts)}")
+    ring = _ring(arch, contacts.pop())  # hinges at the ends of each cut's contact (docs/physics/limit-analysis.md#12-effective-contact)
     u = [ring.u_of_hinge(h) for h in hinges] if cuts is None else [float(c) for c in cuts]
     if len(u) != 4:
         raise ArchdemInputError("a four-bar needs four cuts")
     if any(b <= a for a, b in zip(u[:-1], u[1:])):
         raise ArchdemInputError("hinges must be given left to right at distinct cuts")
-    I, E = ring.ends(np.array(u))
+    I, E = ring.contact_ends(np.array(u))
     n = ring.normal(np.array(u))
     pts = [E[k] if h.face == "extrados" else I[k] for k, h in enumerate(hinges)]
     oth = [I[k] if h.face == "extrados" else E[k] for k, h in enumerate(hinges)]
@@ -342,7 +345,7 @@ def alternative_four_bars(before: FourBar, n_grid: int = 33, keep: int = 3) -> l
     if before.arch is None:
         return []
     arch, rho = before.arch, before.density
-    ring = _ring(arch)
+    ring = _ring(arch, before.hinges[0].contact)
     grid = np.unique(np.concatenate([np.linspace(0.0, ring.U, n_grid),
                                      [r for reg in before.regions for r in reg]]))
     P = len(grid) - 1
@@ -360,7 +363,7 @@ def alternative_four_bars(before: FourBar, n_grid: int = 33, keep: int = 3) -> l
     B = np.sum(v * JS, axis=1) + w * J
     cum = lambda x: np.concatenate([np.zeros((1,) + x.shape[1:]), np.cumsum(x, axis=0)])  # noqa: E731
     cm, cSx, cSy, cJ, cA, cB = cum(m), cum(Sx), cum(Sy), cum(J), cum(A), cum(B)
-    I, E = ring.ends(grid)
+    I, E = ring.contact_ends(grid)
     nrm = ring.normal(grid)
     combos = np.array(list(itertools.combinations(range(P + 1), 4)), dtype=int)
     best: list[tuple[float, np.ndarray, tuple[str, ...]]] = []
@@ -456,20 +459,22 @@ class CutLayout(FourHingeLayout):
     cuts: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
 
-def minimised_layout(arch: PointedArch, density: float = 500.0) -> CutLayout:
-    """The minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring), with its cuts."""
+def minimised_layout(arch: PointedArch, density: float = 500.0, contact: float = 1.0) -> CutLayout:
+    """The minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring), with its cuts;
+    ``contact``: the effective contact of the cuts."""
     from analytic.limit_continuous import continuous_collapse
 
-    res = continuous_collapse(arch, density=density)
+    res = continuous_collapse(arch, density=density, contact=contact)
     if res.layout is None:
         raise ArchdemInputError(f"no admissible four-hinge mechanism found for this arch ({res.message})")
     return CutLayout(res.layout.hinges, res.layout.blocks, tuple(float(x) for x in res.u))  # type: ignore[arg-type]
 
 
 def minimised_four_bar(arch: PointedArch, density: float = 500.0, direction: int = 1,
-                       name: str = "four-bar (minimised)") -> FourBar:
-    """The four-bar of the minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring)."""
-    return arch_four_bar(arch, minimised_layout(arch, density), density, direction=direction, name=name)
+                       name: str = "four-bar (minimised)", contact: float = 1.0) -> FourBar:
+    """The four-bar of the minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring)
+    with effective contact ``contact``."""
+    return arch_four_bar(arch, minimised_layout(arch, density, contact), density, direction=direction, name=name)
 
 
 # ---------------------------------------------------------------------------------------------

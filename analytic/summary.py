@@ -5,12 +5,12 @@ import warnings
 
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
-            contact_fraction: float = 1.0, min_spacing: float = 0.0, disc_kw: dict | None = None,
-            continuous=None) -> dict:
-    """All analytic multipliers of one arch as a JSON-ready dict. ``continuous``: the arch's
-    :func:`analytic.limit_continuous.continuous_collapse` result at the same density, spacing
-    and thickness if the caller has it (e.g. the ``"continuous"`` of a :func:`multiplier_series`
-    row); solved here otherwise (about 1 s)."""
+            min_spacing: float = 0.0, disc_kw: dict | None = None, continuous=None) -> dict:
+    """All analytic multipliers of one arch as a JSON-ready dict. ``disc_kw``: the discretisation
+    (:func:`specimens.blocks.discretise` keywords; its ``contact`` also applies to the continuous
+    ring). ``continuous``: the arch's :func:`analytic.limit_continuous.continuous_collapse` result
+    at the same density, spacing, thickness and contact if the caller has it (e.g. the
+    ``"continuous"`` of a :func:`multiplier_series` row); solved here otherwise (about 1 s)."""
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
@@ -18,11 +18,12 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
 
     kw = dict(disc_kw or {})
     density = kw.get("density", 500.0)
+    contact = float(kw.get("contact", 1.0))
     if continuous is not None:
-        want = (float(effective_thickness), float(min_spacing))
-        if (continuous.effective_thickness, continuous.min_spacing) != want:
-            raise ValueError(f"continuous result at (thickness, spacing) "
-                             f"{(continuous.effective_thickness, continuous.min_spacing)} != {want}")
+        want = (float(effective_thickness), float(min_spacing), contact)
+        have = (continuous.effective_thickness, continuous.min_spacing, continuous.contact)
+        if have != want:
+            raise ValueError(f"continuous result at (thickness, spacing, contact) {have} != {want}")
         cont = continuous
         # the warning continuous_collapse raised when it solved it, rebuilt from the result
         caught_msgs = [] if cont.converged else [f"continuous_collapse: {cont.message}"]
@@ -30,15 +31,15 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             cont = continuous_collapse(arch, density=density, min_spacing=min_spacing,
-                                       effective_thickness=effective_thickness)
+                                       effective_thickness=effective_thickness, contact=contact)
         caught_msgs = [str(w.message) for w in caught]
     asm = discretise(arch, config=config, **kw)
-    kin = enumerate_mechanisms(asm, contact_fraction=contact_fraction)
-    lp = solve_lp(asm, mu_joint, mu_base, contact_fraction=contact_fraction)
+    kin = enumerate_mechanisms(asm)
+    lp = solve_lp(asm, mu_joint, mu_base)
     return {
         "arch": arch.describe(),
         "config": config, "mu_joint": mu_joint, "mu_base": mu_base,
-        "effective_thickness": effective_thickness, "contact_fraction": contact_fraction,
+        "effective_thickness": effective_thickness, "contact": asm.contact,
         "lambda_continuous": cont.lam,
         "hinges_continuous": [{"half": "left" if h.side < 0 else "right", "angle_rad": h.psi, "face": h.face,
                                "polar_angle_rad": h.polar_about_origin(arch.with_thickness(arch.t * effective_thickness)),

@@ -8,6 +8,7 @@ a four-hinge mechanism within 0.5 % of its lambda), and tilt lambda at the refer
     python benchmarks/validate_dem.py [--ids a,b] [--configs glued,free] [--workers 2] [--start lp|scan]
                                       [--hold-time S] [--ramp-time S] [--engine pybullet|mujoco] [--no-rest]
                                       [--guess-bracket LO,HI] [--probe-ends first|last] [--iterations N]
+                                      [--contact C]
 
 Each hold-and-bisect starts at the static LP of the same blocks at the run's friction (the
 default protocol); ``--start scan`` starts it from the ramp scan instead;
@@ -19,7 +20,8 @@ from (LO, HI) x the LP instead of ``TiltProtocol.guess_bracket`` (files named ``
 ``--probe-ends first`` simulates both ends of that bracket before bisecting instead of
 ``TiltProtocol.probe_ends`` (files named ``..._probefirst``); ``--iterations N`` runs every
 simulation with N solver iterations per step instead of ``Settings.solver_iterations`` (files
-named ``..._itN``).
+named ``..._itN``); ``--contact C`` cuts every specimen with effective contact C (relieved joints,
+against the LP at the same contact; files named ``..._contactC``).
 """
 from __future__ import annotations
 
@@ -35,7 +37,8 @@ import numpy as np
 OUT = Path(__file__).resolve().parent / "results"
 
 
-def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet", **settings_kw) -> float:
+def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybullet", contact: float = 1.0,
+               **settings_kw) -> float:
     """Largest displacement of any body point after ``seconds`` at rest [m]."""
     from dem.core.loads import Rest
     from dem.core.model import from_assembly
@@ -44,7 +47,7 @@ def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybul
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
-    m = from_assembly(discretise(get_specimen(sid).arch, config=config), name=sid)
+    m = from_assembly(discretise(get_specimen(sid).arch, config=config, contact=contact), name=sid)
     r = simulate(m, Settings(engine=engine, **settings_kw), Rest(), seconds, record_every=0.1, stop_on_collapse=False, friction_work=False)
     return float(r.history.dmax.max())
 
@@ -62,10 +65,11 @@ def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tupl
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
 
 
-def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
+def one(job: tuple[str, str, bool, str, dict, dict, float]) -> dict:
     """One specimen and configuration; ``job[4]``: TiltProtocol fields that differ from the defaults;
-    ``job[5]``: Settings fields that differ from the defaults (other than friction and engine)."""
-    sid, config, with_drift, engine, proto_kw, settings_kw = job
+    ``job[5]``: Settings fields that differ from the defaults (other than friction and engine);
+    ``job[6]``: the effective contact."""
+    sid, config, with_drift, engine, proto_kw, settings_kw, contact = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.tilt import TiltProtocol, tilt
@@ -74,7 +78,7 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     from specimens.catalogue import get_specimen
     from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
-    asm = discretise(get_specimen(sid).arch, config=config)
+    asm = discretise(get_specimen(sid).arch, config=config, contact=contact)
     m = from_assembly(asm, name=sid)
     lp = reference_lp(asm, NO_SLIDING_MU, NO_SLIDING_MU)  # exact with no sliding: a collapse below it is spurious
     lp_ref = reference_lp(asm, REFERENCE_MU_JOINT, REFERENCE_MU_BASE)  # associative: no bound
@@ -97,9 +101,9 @@ def one(job: tuple[str, str, bool, str, dict, dict]) -> dict:
     row = check_result(ns, asm, lp)
     hinges = list(row.hinges)
     ok, lam_h = hinge_match(asm, hinges, lp.lam)
-    drift = rest_drift(sid, config, engine=engine, **settings_kw) if with_drift else float("nan")
+    drift = rest_drift(sid, config, engine=engine, contact=contact, **settings_kw) if with_drift else float("nan")
     return {
-        "id": sid, "config": config, "engine": engine, "start": proto.start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
+        "id": sid, "config": config, "engine": engine, "contact": contact, "start": proto.start, "hold_time": proto.hold_time, "ramp_time": proto.ramp_time,
         "rest_after": proto.rest_after, "guess_bracket": list(proto.guess_bracket),
         "probe_ends": proto.probe_ends, "settings": ns.settings.to_dict(),
         "lp_lambda": lp.lam, "lp_hinges": list(lp.hinges),
@@ -155,6 +159,7 @@ def main() -> None:
     ap.add_argument("--iterations", type=int, default=None, help="solver iterations per step (default: Settings')")
     ap.add_argument("--probe-ends", dest="probe", choices=("first", "last"), default=None,
                     help="when the first bracket's ends are simulated (default: TiltProtocol.probe_ends)")
+    ap.add_argument("--contact", type=float, default=1.0, help="effective contact of every joint (default 1)")
     a = ap.parse_args()
     bracket = tuple(float(x) for x in a.bracket.split(",")) if a.bracket else None
     if a.sensitivity:
@@ -171,11 +176,12 @@ def main() -> None:
                                                         ("probe_ends", a.probe)) if v is not None},
                 **({} if a.rest else {"rest_after": None})}
     settings_kw = {} if a.iterations is None else {"solver_iterations": a.iterations}
-    jobs = [(s, c, a.drift, a.engine, proto_kw, settings_kw) for c in a.configs.split(",") for s in ids]
+    jobs = [(s, c, a.drift, a.engine, proto_kw, settings_kw, a.contact) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
         + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") \
         + (f"_bracket{bracket[0]:g}-{bracket[1]:g}" if bracket else "") + (f"_probe{a.probe}" if a.probe else "") \
-        + (f"_it{a.iterations}" if a.iterations else "") + ("" if a.engine == "pybullet" else f"_{a.engine}")
+        + (f"_it{a.iterations}" if a.iterations else "") + ("" if a.engine == "pybullet" else f"_{a.engine}") \
+        + ("" if a.contact == 1.0 else f"_contact{a.contact:g}")
     t0 = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
         rows = list(ex.map(one, jobs))

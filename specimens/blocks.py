@@ -16,13 +16,18 @@ pointing from ``a`` to ``b``.
 Block shapes: ``linearised`` (flat faces through the joint corners, the default: the
 specimens were sawn) or ``curved`` (arcs polygonised with ``segments`` chords per voussoir).
 Non-convex blocks are described as compounds of convex pieces, never as their hull.
+
+Effective contact ``contact`` c in (0, 1] (docs/physics/geometry.md#12-effective-contact): every
+joint touches only within its central ``c x`` depth. The convex pieces (what engines collide and
+meshes export) are relieved by a chamfer at each joint corner; outlines, masses and inertias stay
+those of the full sawn blocks.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import Literal
+from typing import Literal, Mapping
 
 import numpy as np
 
@@ -43,7 +48,8 @@ DEFAULT_VOUSSOIRS = 8
 
 @dataclass(frozen=True)
 class Block:
-    """One sawn block: outline (counter-clockwise, ``(n, 2)`` m) and its convex pieces."""
+    """One sawn block: outline (counter-clockwise, ``(n, 2)`` m) and its convex pieces (relieved
+    at the joints when they touch on part of their depth)."""
 
     name: str
     outline: np.ndarray
@@ -58,6 +64,8 @@ class Body:
 
     Mass properties are exact for the body's own (polygonal) outline; ``inertia`` is the
     centroidal 3x3 tensor [kg m^2] in the frame x (horizontal), y (up), z (out of plane).
+    ``pieces`` are the convex pieces it collides on: the outline's, relieved at the joints when
+    they touch on part of their depth (the masses stay the outline's).
     """
 
     index: int
@@ -88,7 +96,8 @@ class Joint:
     """An interface between two bodies (or a body and the base, index ``-1``).
 
     ``p_i`` / ``p_e``: end points at the intrados / extrados [m]; ``normal``: unit vector
-    from body ``a`` to body ``b``; ``psi``: polar angle of the radial cut [rad].
+    from body ``a`` to body ``b``; ``psi``: polar angle of the radial cut [rad]; ``band``: the
+    part of the joint that touches, as fractions of its depth from ``p_i`` (0) to ``p_e`` (1).
     """
 
     index: int
@@ -99,6 +108,17 @@ class Joint:
     p_e: np.ndarray
     normal: np.ndarray
     psi: float
+    band: tuple[float, float] = (0.0, 1.0)
+
+    @property
+    def contact(self) -> float:
+        """Fraction of the joint's depth that touches."""
+        return self.band[1] - self.band[0]
+
+    @property
+    def contact_points(self) -> tuple[np.ndarray, np.ndarray]:
+        """Intrados and extrados ends of the joint's contact band [m]."""
+        return band_points(self.p_i, self.p_e, self.band)
 
     @property
     def is_base(self) -> bool:
@@ -135,6 +155,8 @@ class Assembly:
     bodies: tuple[Body, ...]
     joints: tuple[Joint, ...]
     joint_angles: np.ndarray = field(repr=False)
+    contact: float = 1.0
+    imperfect: bool = False  # per-joint contact bands (``discretise(bands=...)``) instead of ``contact``
 
     @property
     def n_bodies(self) -> int:
@@ -170,7 +192,77 @@ class Assembly:
         return {
             "config": self.config, "shape": self.shape, "n_voussoirs": self.n_voussoirs,
             "crown_fraction": self.crown_fraction, "density": self.density, "segments": self.segments,
+            "contact": self.contact,
+            **({"bands": {j.name: list(j.band) for j in self.joints}} if self.imperfect else {}),
         }
+
+
+def check_contact(contact: float) -> float:
+    """``contact`` as a float in (0, 1], or a one-line input error."""
+    try:
+        c = float(contact)
+    except (TypeError, ValueError):
+        raise ArchdemInputError(f"effective contact must be a number in (0, 1], got {contact!r}") from None
+    if not (math.isfinite(c) and 0 < c <= 1):
+        raise ArchdemInputError(f"effective contact must be a fraction of the joint depth in (0, 1], got {contact!r}")
+    return c
+
+
+def central_band(contact: float) -> tuple[float, float]:
+    """The band (fractions of the depth) of a joint touching over its central ``contact`` fraction."""
+    return (0.0, 1.0) if contact == 1.0 else (0.5 * (1.0 - contact), 0.5 * (1.0 + contact))
+
+
+def check_band(band, name: str = "joint") -> tuple[float, float]:
+    """``band`` as ``(lo, hi)`` with ``0 <= lo < hi <= 1``, or a one-line input error."""
+    try:
+        lo, hi = (float(x) for x in band)
+    except (TypeError, ValueError):
+        raise ArchdemInputError(f"contact band of {name} must be two numbers (lo, hi), got {band!r}") from None
+    if not (0.0 <= lo < hi <= 1.0):
+        raise ArchdemInputError(f"contact band of {name} must satisfy 0 <= lo < hi <= 1, got ({lo:g}, {hi:g})")
+    return lo, hi
+
+
+def band_points(p_i: np.ndarray, p_e: np.ndarray, band: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """Ends of the part ``band`` (fractions from ``p_i``) of the joint ``p_i``-``p_e`` [m]."""
+    p_i, p_e = np.asarray(p_i, float), np.asarray(p_e, float)
+    if band == (0.0, 1.0):
+        return p_i, p_e
+    d = p_e - p_i
+    return p_i + band[0] * d, p_i + band[1] * d
+
+
+#: Greatest share of a block edge a relief chamfer may take (the two ends of an edge keep a gap).
+RELIEF_EDGE_SHARE = 0.45
+
+
+def _relieve(piece: np.ndarray, joint: Joint) -> np.ndarray:
+    """``piece`` with the corners of ``joint``'s face chamfered to its contact points (unchanged
+    if the face is not an edge of the piece).
+
+    Each corner P is replaced by the contact end A on the joint and a point B on the other edge
+    at P as far from P as A is (a 45 degree relief; at most RELIEF_EDGE_SHARE of that edge); a
+    corner the band reaches is kept.
+    """
+    n = len(piece)
+    tol = 1e-9 * max(1.0, float(np.abs(piece).max()))
+    idx = [next((k for k in range(n) if np.linalg.norm(piece[k] - p) < tol), None) for p in (joint.p_i, joint.p_e)]
+    if None in idx or (idx[0] - idx[1]) % n not in (1, n - 1):
+        return piece
+    ends = dict(zip(idx, joint.contact_points))
+    depth = dict(zip(idx, (joint.band[0] * joint.length, (1.0 - joint.band[1]) * joint.length)))
+    out: list[np.ndarray] = []
+    for k in range(n):
+        if k not in ends or depth[k] == 0.0:
+            out.append(piece[k])
+            continue
+        prev_is_joint = (k - 1) % n in ends
+        q = piece[(k + 1) % n] if prev_is_joint else piece[(k - 1) % n]
+        edge = q - piece[k]
+        b = piece[k] + min(depth[k], RELIEF_EDGE_SHARE * np.linalg.norm(edge)) * edge / np.linalg.norm(edge)
+        out.extend([ends[k], b] if prev_is_joint else [b, ends[k]])
+    return np.array(out)
 
 
 def joint_angles(arch: PointedArch, n_voussoirs: int = DEFAULT_VOUSSOIRS, crown_fraction: float = 1.0) -> np.ndarray:
@@ -253,10 +345,15 @@ def discretise(
     config: Config = "glued",
     density: float = DEFAULT_DENSITY,
     segments: int = 4,
+    contact: float = 1.0,
+    bands: Mapping[str, tuple[float, float]] | None = None,
 ) -> Assembly:
     """Cut ``arch`` into ``n_voussoirs`` voussoirs per side plus a crown (docs/physics/geometry.md#4-discretisation).
 
-    ``density`` in kg/m^3; ``segments`` = chords per voussoir for the curved shape.
+    ``density`` in kg/m^3; ``segments`` = chords per voussoir for the curved shape; ``contact``:
+    the central fraction of every joint's depth that touches (1 = the full joint); ``bands``:
+    joint name -> ``(lo, hi)``, the touching part of that joint instead (fractions of its depth
+    from the intrados end), e.g. an imperfect realisation (:mod:`specimens.imperfection`).
     """
     if not isinstance(n_voussoirs, (int, np.integer)) or n_voussoirs < 1:
         raise ArchdemInputError(f"number of voussoirs per side must be an integer >= 1, got {n_voussoirs!r}")
@@ -272,6 +369,8 @@ def discretise(
         raise ArchdemInputError(f"segments per voussoir must be >= 1, got {segments!r}")
     if config == "glued" and n_voussoirs < 2:
         raise ArchdemInputError("the glued configuration needs at least 2 voussoirs per side")
+    contact = check_contact(contact)
+    bands = {str(k): check_band(v, str(k)) for k, v in (bands or {}).items()}
 
     psi = joint_angles(arch, n_voussoirs, crown_fraction)
     n = n_voussoirs
@@ -327,7 +426,8 @@ def discretise(
         s = math.sin(psi[k])
         c = math.cos(psi[k])
         normal = np.array([s, c]) if side < 0 else np.array([s, -c])
-        joints.append(Joint(len(joints), name, a, b, p_i, p_e, normal, float(psi[k])))
+        joints.append(Joint(len(joints), name, a, b, p_i, p_e, normal, float(psi[k]),
+                            bands.get(name, central_band(contact))))
 
     left_names = [f"L{k}" for k in range(1, n + 1)] + ["C"]
     for k in range(0, n + 1):  # joint Lk between block L(k) (or base) and L(k+1) (or crown)
@@ -342,8 +442,30 @@ def discretise(
         if a != b:
             add(f"R{k}", a, b, +1, k)
 
+    unknown = set(bands) - {j.name for j in joints}
+    if unknown:
+        raise ArchdemInputError(f"contact bands given for joints this assembly does not have: {sorted(unknown)}")
+    if any(j.band != (0.0, 1.0) for j in joints):
+        blocks, bodies = _relieved(blocks, bodies, joints)
     return Assembly(arch, config, shape, int(n_voussoirs), float(crown_fraction), float(density), int(segments),
-                    tuple(blocks), tuple(bodies), tuple(joints), psi)
+                    tuple(blocks), tuple(bodies), tuple(joints), psi, contact, bool(bands))
+
+
+def _relieved(blocks: list[Block], bodies: list[Body], joints: list[Joint]) -> tuple[list[Block], list[Body]]:
+    """Blocks and bodies with every joint face relieved (pieces only; outlines and masses kept)."""
+    def relieve(piece: np.ndarray) -> np.ndarray:
+        for j in joints:
+            piece = _relieve(piece, j)
+        return piece
+
+    new_blocks = [replace(b, pieces=tuple(relieve(p) for p in b.pieces)) for b in blocks]
+    for b in new_blocks:
+        for p in b.pieces:
+            if not is_convex(p):  # pragma: no cover - a geometry bug, not user input
+                raise AssertionError(f"relieved piece of block {b.name} is not convex")
+    by_name = {b.name: b for b in new_blocks}
+    new_bodies = [replace(b, pieces=tuple(p for m in b.blocks for p in by_name[m].pieces)) for b in bodies]
+    return new_blocks, new_bodies
 
 
 def _make_body(index, name, block_names, outline, pieces, sec: SectionProperties, density: float, width: float) -> Body:

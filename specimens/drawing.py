@@ -19,9 +19,14 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
         ax = Figure(figsize=(7, 5.5)).subplots()
     for k, body in enumerate(assembly.bodies):
         fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if body.name != "C" else "#c4a97a")
-        ax.add_patch(Polygon(body.outline * 1000, closed=True, fc=fc, ec="k", lw=0.8))
+        if assembly.contact == 1.0:
+            ax.add_patch(Polygon(body.outline * 1000, closed=True, fc=fc, ec="k", lw=0.8))
+        else:  # the relieved pieces, so the reduced joints show
+            for piece in body.pieces:
+                ax.add_patch(Polygon(piece * 1000, closed=True, fc=fc, ec=fc, lw=0.3))
+            ax.add_patch(Polygon(body.outline * 1000, closed=True, fc="none", ec="0.6", lw=0.4, ls=":"))
     for j in assembly.joints:
-        p = np.array([j.p_i, j.p_e]) * 1000
+        p = np.array(j.contact_points) * 1000
         col = (joint_colors or {}).get(j.name, "tab:blue")
         ax.plot(p[:, 0], p[:, 1], color=col, lw=1.6)
         # label outside the extrados along the joint direction

@@ -18,6 +18,17 @@ class CampaignContext:
     workers: int | None = None
     log: Callable[[str], None] = print
     results: dict = field(default_factory=dict)
+    contact: float | str = 1.0  # effective contact of every joint, or "calibrated" (per specimen)
+
+    def contact_of(self, spec) -> float:
+        """The effective contact of ``spec``'s joints in this campaign."""
+        if self.contact == "calibrated":
+            from analytic.calibration import load_calibration
+
+            return load_calibration().contact(spec.arch)
+        from specimens.blocks import check_contact
+
+        return check_contact(self.contact)
 
 
 def write_csv(path: Path, rows: list[dict]) -> None:

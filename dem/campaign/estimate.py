@@ -3,6 +3,7 @@ machine's speed reading (:func:`machine_speed`) that scales them (docs/timings.m
 from __future__ import annotations
 
 from dem.campaign.context import CampaignContext
+from dem.campaign.step_lab import lab_plan
 from dem.campaign.step_map import map_plan
 from dem.campaign.step_record import record_plan
 from dem.campaign.step_shake import shake_plan
@@ -13,6 +14,8 @@ from dem.campaign.step_tilt import tilt_frictions
 UNIT_CORE_S = {
     ("tilt", True): 9.1,  # one tilt test, bisected to 0.5 % from the LP bracket (3 simulations)
     ("tilt", False): 7.2,
+    ("lab", True): 12.2,  # one tilt test of imperfect blocks (relieved joints: PyBullet's pads)
+    ("lab", False): 12.2,  # ... the same protocol in the full campaign (measured on the quick one)
     ("map", True): 6.9,  # one map case (tilt to 2 %, LP-started bracket, 2.5 simulations)
     ("map", False): 6.1,
     ("shake", True): 30.3,  # one threshold (scan + bisection) at one frequency, tol 2 %
@@ -65,9 +68,11 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
 
     cores = max(1, ctx.workers or os.cpu_count() or 1)
     map_specs, mus, refine = map_plan(ctx)
+    tested, predicted, n_real = lab_plan(ctx)
     shake_specs, freqs = shake_plan(ctx)
     units = {
         "tilt": (len(ctx.specimens) * len(tilt_frictions(ctx)), "tilt tests"),
+        "lab": (len(tested) * n_real + len(predicted), "tilt tests of imperfect blocks"),
         "map": (len(map_specs) * (len(parse_mu_grid(mus)) + refine), "map tilt cases"),
         "shake": (len(shake_specs) * len(freqs), "sine-pulse thresholds"),
         "record": (len(record_plan(ctx)), "record thresholds"),

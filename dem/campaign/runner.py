@@ -16,6 +16,7 @@ from typing import Callable
 from dem.campaign.context import CampaignContext, write_json_atomic
 from dem.campaign.step_analytic import step_analytic
 from dem.campaign.step_catalogue import step_catalogue
+from dem.campaign.step_lab import step_lab
 from dem.campaign.step_map import step_map
 from dem.campaign.step_record import step_record
 from dem.campaign.step_shake import step_shake
@@ -30,6 +31,7 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
     "catalogue": (step_catalogue, "specimen catalogue, drawings and meshes"),
     "analytic": (step_analytic, "limit analysis of every specimen"),
     "tilt": (step_tilt, "virtual tilt test of every specimen vs limit analysis"),
+    "lab": (step_lab, "virtual vs physical: calibrated imperfect joints against the laboratory tilt tests"),
     "map": (step_map, "friction threshold map (rocking / sliding)"),
     "shake": (step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar"),
     "record": (step_record, "recorded accelerogram scaled until collapse"),
@@ -48,7 +50,8 @@ def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
     out.mkdir(parents=True, exist_ok=True)
     manifest_path = out / "campaign.json"
     manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
-    params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "quick": ctx.quick}
+    params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "quick": ctx.quick,
+              **({} if ctx.contact == 1.0 else {"contact": ctx.contact})}
     if manifest and manifest.get("parameters") != params:
         raise ArchdemInputError(
             f"{out} holds a campaign with other parameters ({manifest.get('parameters')}); choose another --out"
@@ -82,7 +85,8 @@ def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
         ctx.log(f"[{name}] done in {wall:.1f} s")
     from dem.campaign.report import build_report
 
-    rep = build_report(out, manifest, {k: v[1] for k, v in STEPS.items()})
+    # the report's own entry is left out, so a resumed campaign writes the same campaign.h5
+    rep = build_report(out, {k: v for k, v in manifest.items() if k != "report"}, {k: v[1] for k, v in STEPS.items()})
     manifest["report"] = rep["report"]
     write_json_atomic(manifest_path, manifest)
     return manifest

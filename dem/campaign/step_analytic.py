@@ -26,10 +26,11 @@ def step_analytic(ctx: CampaignContext, d: Path) -> dict:
     rows = []
     for s in ctx.specimens:
         arch_c, cont = cont_of.get(s.id, (None, None))
-        a = analyse(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE,
-                    continuous=cont if arch_c == s.arch else None)
+        c = ctx.contact_of(s)
+        a = analyse(s.arch, ctx.config, REFERENCE_MU_JOINT, REFERENCE_MU_BASE, disc_kw={"contact": c},
+                    continuous=cont if arch_c == s.arch and c == 1.0 else None)
         other = "free" if ctx.config == "glued" else "glued"
-        lam_other = enumerate_mechanisms(discretise(s.arch, config=other)).lam
+        lam_other = enumerate_mechanisms(discretise(s.arch, config=other, contact=c)).lam
         lam80 = lam80_of[s.id] if s.id in lam80_of else continuous_collapse(s.arch, effective_thickness=0.8).lam
         sliding = [j for j, v in a["joints_lp"].items() if "sliding" in v["state"]]
         rows.append({

@@ -20,7 +20,7 @@ def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
     (d / "catalogue.json").write_text(json.dumps([{k: r[k] for k in JSON_KEYS} for r in rows], indent=2))
     figures = []
     for s in ctx.specimens:
-        asm = discretise(s.arch, config=ctx.config)
+        asm = discretise(s.arch, config=ctx.config, contact=ctx.contact_of(s))
         png = save_drawing(asm, d / "drawings" / f"{s.id}.png", title=f"{s.id}   Sh = {s.arch.Sh:.2f}, Sd = {s.arch.Sd:.2f}")
         figures.append({"path": f"catalogue/drawings/{png.name}", "caption": f"{s.id}: blocks and joints ({ctx.config})"})
         export_meshes(asm, d / "meshes" / s.id, "glb")

@@ -27,7 +27,8 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
     res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, studies_dir(ctx) / "map.h5",
                         workers=ctx.workers, resume=(studies_dir(ctx) / "map.h5").exists(), progress=True,
                         refine=refine,
-                        settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None)
+                        settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None,
+                        contact={s.id: ctx.contact_of(s) for s in specs})
     write_csv(d / "map.csv", res.to_rows("summary"))
     write_csv(d / "map_points.csv", res.to_rows("points"))
     figs = res.figures(d / "figures")

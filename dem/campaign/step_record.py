@@ -67,7 +67,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     specs = record_plan(ctx)
     rows = []
     for s in specs:
-        model = as_model(s, config=ctx.config)
+        model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
         r = threshold(model, 1.0, Settings(engine=ctx.engine), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
                       tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, motion_fn=RecordAtPGA(str(path), t0, t1))

@@ -40,10 +40,11 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     specs, freqs = shake_plan(ctx)
     rows, figures = [], []
     for s in specs:
+        c = ctx.contact_of(s)
         dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers,
-                                 settings=Settings(engine=ctx.engine),
+                                 settings=Settings(engine=ctx.engine), disc_kw={"contact": c} if c != 1.0 else None,
                                  a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01)
-        ana = analytic_domains(s.arch, freqs, workers=1)
+        ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))
         fb, tb = _lowest_threshold(ana.get("four-bar")), _lowest_threshold(ana.get("two-bar"))
         for t in dem["thresholds"]:
             f = t["freq"]
@@ -97,7 +98,7 @@ def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list
     t = next((t for t in dem["thresholds"] if t["amplitude_g"] is not None), None)
     if t is None:
         return []
-    model = from_assembly(discretise(spec.arch, config=ctx.config), name=spec.id)
+    model = from_assembly(discretise(spec.arch, config=ctx.config, contact=ctx.contact_of(spec)), name=spec.id)
     out = []
     for what, a_g in (("survival", t["bracket_g"][0]), ("collapse", t["bracket_g"][1])):
         res = shake(model, SinePulse(a_g * G, t["freq"]), Settings(engine=ctx.engine), label=spec.id)

@@ -31,14 +31,14 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     # the tilt test's own protocol (LP start, 0.5 %), quick or not: 3 simulations per test
     # (docs/timings.md#2-the-full-campaign)
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
-    cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng)
+    cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng, contact=ctx.contact_of(s))
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
     res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "tilt.h5", workers=ctx.workers, resume=True,
                     study_attrs={"study": "campaign-tilt", "config": ctx.config, "quick": ctx.quick})
     by_key = res.by_key
     rows = []
     for s in ctx.specimens:
-        asm = discretise(s.arch, config=ctx.config)
+        asm = discretise(s.arch, config=ctx.config, contact=ctx.contact_of(s))
         lp = {k: reference_lp(asm, mj, mb) for k, (mj, mb) in
               (("reference", (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)), ("no_sliding", (NO_SLIDING_MU, NO_SLIDING_MU)))}
         out = {"id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6)}

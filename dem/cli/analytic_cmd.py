@@ -28,11 +28,9 @@ def register(sub) -> None:
     p.add_argument("--mu-joint", type=float, default=None, help=f"block-block friction (default {REFERENCE_MU_JOINT:g})")
     p.add_argument("--mu-base", type=float, default=None, help=f"block-base friction (default {REFERENCE_MU_BASE:g})")
     p.add_argument("--effective-thickness", type=float, default=default_of(analyse, "effective_thickness"),
-                   help="fraction of t kept about Rp in the continuous analysis "
+                   help="continuous analysis of the thinner ring: fraction of t kept about Rp, its "
+                        "weight included (unlike --contact, which keeps the full weight) "
                         f"(default {default_of(analyse, 'effective_thickness'):g})")
-    p.add_argument("--contact-fraction", type=float, default=default_of(analyse, "contact_fraction"),
-                   help="central fraction of every joint in contact, discrete analyses "
-                        f"(default {default_of(analyse, 'contact_fraction'):g})")
     p.add_argument("--min-spacing", type=float, default=default_of(analyse, "min_spacing"),
                    help=f"least hinge spacing [rad] (continuous; default {default_of(analyse, 'min_spacing'):g})")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -69,8 +67,8 @@ def run(args: argparse.Namespace) -> int:
     mu_b = _finite_mu("--mu-base", args.mu_base, REFERENCE_MU_BASE)
     if not (0 < args.effective_thickness <= 1):
         raise ArchdemInputError(f"--effective-thickness must be in (0, 1], got {args.effective_thickness}")
-    res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.contact_fraction,
-                  args.min_spacing, discretisation_kwargs(args))
+    res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.min_spacing,
+                  discretisation_kwargs(args, arch))
     res["id"] = label
     res = {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}
     if args.json:

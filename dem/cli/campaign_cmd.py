@@ -5,7 +5,7 @@ import argparse
 import time
 from pathlib import Path
 
-from dem.cli.common import add_engine_argument, default_of, writable_dir
+from dem.cli.common import add_engine_argument, contact_option, default_of, writable_dir
 
 
 def _campaign(args: argparse.Namespace) -> int:
@@ -16,7 +16,7 @@ def _campaign(args: argparse.Namespace) -> int:
     specs = select_specimens(args.specimens)
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
-                          quick=args.quick, workers=args.workers)
+                          quick=args.quick, workers=args.workers, contact=args.contact)
     t0 = time.perf_counter()
     steps = None
     if args.steps:
@@ -61,6 +61,9 @@ def register(sub) -> None:
     p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
     p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(CampaignContext, "config"))
+    p.add_argument("--contact", type=contact_option, default=default_of(CampaignContext, "contact"), metavar="C|calibrated",
+                   help="effective contact of every joint in every step, in (0, 1], or 'calibrated' (archdem calibrate; "
+                        f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
     add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")

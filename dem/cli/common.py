@@ -8,7 +8,7 @@ import json
 import math
 from typing import Any
 
-from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS
+from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
 from specimens.io import json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
@@ -44,6 +44,11 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
                    help=f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})")
     g.add_argument("--voussoirs", type=int, default=None, help=f"voussoirs per side (default {DEFAULT_VOUSSOIRS})")
     g.add_argument("--density", type=float, default=None, help=f"density [kg/m^3] (default {DEFAULT_DENSITY:g})")
+    p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
+                   help="effective contact: every joint touches within its central fraction C of the depth, "
+                        "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
+                        "(archdem calibrate); masses stay those of the full blocks "
+                        f"(default {default_of(discretise, 'contact'):g}: the full joint)")
 
 
 def arch_from_args(args: argparse.Namespace):
@@ -70,7 +75,32 @@ def arch_from_args(args: argparse.Namespace):
     return label, arch
 
 
-def discretisation_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+def contact_option(text: str) -> float | str:
+    """``--contact``: a fraction in (0, 1] or ``calibrated``."""
+    if text.strip().lower() == "calibrated":
+        return "calibrated"
+    try:
+        return check_contact(float(text))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a fraction in (0, 1] or 'calibrated', got {text!r}") from None
+    except ArchdemInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def resolve_contact(value: float | str | None, arch) -> float:
+    """The effective contact of ``arch`` for a ``--contact`` value (None: the full joint)."""
+    if value is None:
+        return 1.0
+    if value == "calibrated":
+        from analytic.calibration import load_calibration
+
+        return load_calibration().contact(arch)
+    return check_contact(value)
+
+
+def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]:
+    """The :func:`specimens.blocks.discretise` keywords of the arch options (``arch``: needed for
+    ``--contact calibrated``)."""
     kw: dict[str, Any] = {}
     if getattr(args, "voussoirs", None) is not None:
         if args.voussoirs < 1:
@@ -80,6 +110,8 @@ def discretisation_kwargs(args: argparse.Namespace) -> dict[str, Any]:
         if not (args.density > 0 and math.isfinite(args.density)):
             raise ArchdemInputError(f"--density must be positive, got {args.density}")
         kw["density"] = args.density
+    if getattr(args, "contact", None) is not None:
+        kw["contact"] = resolve_contact(args.contact, arch)
     return kw
 
 

@@ -38,12 +38,13 @@ def dem_domain(args: argparse.Namespace) -> int:
     a_max = dem_a_max if a_max is None or a_max == default_of(failure_domain, "a_max_ratio") else float(a_max)
     res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
-                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args))
+                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch))
     if args.plot:
         from dem.plotting.shake import plot_domain_over_analytic
 
         density = getattr(args, "density", None) or DEFAULT_DENSITY
-        plot_domain_over_analytic(res, analytic_domains(arch, freqs, density), args.plot,
+        contact = discretisation_kwargs(args, arch).get("contact", 1.0)
+        plot_domain_over_analytic(res, analytic_domains(arch, freqs, density, contact=contact), args.plot,
                                   title=f"{label}: DEM vs rocking linkages, one-cycle sine")
         res["plot"] = str(args.plot)
     if args.json:

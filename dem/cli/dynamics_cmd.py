@@ -10,6 +10,7 @@ from dem.cli.common import (
     default_of,
     parse_grid,
     print_json,
+    resolve_contact,
     writable_file,
 )
 from specimens.blocks import DEFAULT_DENSITY
@@ -45,6 +46,8 @@ def build_mechanism(args: argparse.Namespace):
             raise ArchdemInputError("give either --block B H or an arch, not both")
         if args.model not in (None, "block"):
             raise ArchdemInputError("--block goes with --model block")
+        if args.contact is not None:
+            raise ArchdemInputError("--contact applies to the joints of an arch, not to --block")
         b, h = args.block
         width = args.width if args.width is not None else SPECIMEN_WIDTH
         return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
@@ -52,17 +55,23 @@ def build_mechanism(args: argparse.Namespace):
     model = args.model or "four-bar"
     if model == "block":
         raise ArchdemInputError("--model block needs --block B H")
+    from dataclasses import replace
+
     from analytic import linkage
 
+    contact = resolve_contact(args.contact, arch)
     if model == "two-bar":
+        if contact != 1.0:
+            raise ArchdemInputError("--contact is not modelled by the two-bar linkage; use the four-bar")
         return label, linkage.arch_two_bar(arch, density, direction=1)
     lay = args.layout
     if lay == "minimised":
-        return label, linkage.minimised_four_bar(arch, density, direction=1)
+        return label, linkage.minimised_four_bar(arch, density, direction=1, contact=contact)
     if lay == "oppenheim":
         layout = linkage.oppenheim_hinges(arch)
     else:
         layout = linkage.parse_hinge_angles(arch, lay)
+    layout = tuple(replace(h, contact=contact) for h in layout)
     fb = linkage.arch_four_bar(arch, layout, density, direction=1, name=f"four-bar ({lay.split(',')[0] if ',' not in lay else 'user'})")
     if not fb.admissible:
         raise ArchdemInputError(f"the {lay} hinge layout is not an admissible mechanism for this arch")

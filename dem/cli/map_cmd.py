@@ -5,7 +5,7 @@ import argparse
 import math
 import sys
 
-from dem.cli.common import add_engine_argument, default_of, print_json, writable_dir
+from dem.cli.common import add_engine_argument, contact_option, default_of, print_json, resolve_contact, writable_dir
 from specimens.errors import ArchdemInputError
 
 
@@ -58,7 +58,8 @@ def _run(args: argparse.Namespace) -> int:
         res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
-                            settings={"engine": args.engine} if args.engine != default_of(Settings, "engine") else None)
+                            settings={"engine": args.engine} if args.engine != default_of(Settings, "engine") else None,
+                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs})
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2
@@ -99,6 +100,9 @@ def register(sub) -> None:
                    f"(default {mus}, {len(parse_mu_grid(mus))} values)")
     p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(catalogue_map, "mu_base"),
                    help=f"block-base friction (default {default_of(catalogue_map, 'mu_base'):g})")
+    p.add_argument("--contact", type=contact_option, default=default_of(catalogue_map, "contact"), metavar="C|calibrated",
+                   help="effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate) "
+                        f"(default {default_of(catalogue_map, 'contact'):g}: the full joint)")
     p.add_argument("--refine", type=int, default=default_of(catalogue_map, "refine"),
                    help=f"bisection steps on mu* after the grid (default {default_of(catalogue_map, 'refine')})")
     p.add_argument("--tol", type=float, default=MAP_TILT_TOL,

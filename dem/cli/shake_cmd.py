@@ -33,7 +33,7 @@ def _model_and_settings(args: argparse.Namespace):
         raise ArchdemInputError("give a specimen id or the arch parameters")
     _positive("--mu-joint", args.mu_joint)
     _positive("--mu-base", args.mu_base)
-    asm = discretise(arch, config=args.config, **discretisation_kwargs(args))
+    asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
     if args.dt is not None:
         _positive("--dt", args.dt)
@@ -93,8 +93,8 @@ def _run_threshold(args: argparse.Namespace) -> int:
     res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
                     a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
     a_max = res.a_range_g[1]
-    s = {"id": label, "lambda": lam, "config": args.config, "mu_joint": settings.mu_joint,
-         "mu_base": settings.mu_base, **res.summary()}
+    s = {"id": label, "lambda": lam, "config": args.config, "contact": model.source.get("contact", 1.0),
+         "mu_joint": settings.mu_joint, "mu_base": settings.mu_base, **res.summary()}
     if args.json:
         print_json(s)
         return 0

@@ -35,7 +35,7 @@ def _assembly(args: argparse.Namespace):
     from specimens.blocks import discretise
 
     label, arch = arch_from_args(args)
-    kw = discretisation_kwargs(args)
+    kw = discretisation_kwargs(args, arch)
     asm = discretise(arch, config=args.config, shape=getattr(args, "shape", default_of(discretise, "shape")), **kw)
     return label, asm
 

@@ -11,6 +11,7 @@ from dem.cli.common import (
     default_of,
     discretisation_kwargs,
     print_json,
+    resolve_contact,
     writable_dir,
     writable_file,
 )
@@ -32,7 +33,11 @@ def _run(args: argparse.Namespace) -> int:
         v = getattr(args, name)
         if not (math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
-    asm = discretise(arch, config=args.config, **discretisation_kwargs(args))
+    if args.ensemble is not None:
+        return _run_ensemble(args, label, arch)
+    if args.seed is not None or args.scatter is not None:
+        raise ArchdemInputError("--seed and --scatter go with --ensemble N")
+    asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
     if args.dt is not None:
         kw["dt"] = args.dt
@@ -56,6 +61,51 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{label} ({args.config}, mu {args.mu_joint:g}/{args.mu_base:g}, {args.protocol}): "
               f"lambda = {res.lam:.4f} (theta = {res.theta_deg:.2f} deg), bracket [{res.bracket[0]:.4f}, "
               f"{res.bracket[1]:.4f}], {res.mode} [{hinges}], {res.n_sims} simulations, {res.wall_s:.1f} s -> {path}")
+    return 0
+
+
+def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
+    """``archdem tilt ID --ensemble N --seed S [--contact C|calibrated] [--scatter MM]``."""
+    from dem.experiments.ensemble import tilt_ensemble
+    from specimens.imperfection import Imperfection
+    from specimens.io import unique_run_path
+
+    if args.protocol != "hold" or args.start != "auto" or args.full_hold or args.planar or args.dt is not None:
+        raise ArchdemInputError("an ensemble runs the default hold protocol: drop --protocol/--start/--full-hold/--planar/--dt")
+    if args.density is not None:
+        raise ArchdemInputError("an ensemble uses the default density: drop --density")
+    if args.seed is None:
+        raise ArchdemInputError("--ensemble needs --seed S (every realisation is reproducible from it)")
+    contact = resolve_contact(args.contact, arch)
+    scatter_mm = args.scatter
+    if scatter_mm is None and args.contact == "calibrated":
+        from analytic.calibration import load_calibration
+
+        scatter_mm = load_calibration().edge_loss_sd * 1e3
+    if scatter_mm is None:
+        raise ArchdemInputError("--ensemble needs the scatter of the joints' edge losses: --scatter MM, "
+                                "or --contact calibrated (the calibrated scatter)")
+    if not (math.isfinite(scatter_mm) and 0 <= scatter_mm <= 1e3 * arch.t / 2):
+        raise ArchdemInputError(f"--scatter must be between 0 and half the ring thickness [mm], got {scatter_mm:g}")
+    if args.workers is not None and args.workers < 1:
+        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
+    imp = Imperfection(edge_loss=(1.0 - contact) * arch.t / 2, edge_loss_sd=scatter_mm / 1e3)
+    out = writable_dir(args.out)
+    path = unique_run_path(out, f"ensemble-{label}-{args.config}-seed{args.seed}")
+    res = tilt_ensemble(label, arch, imp, args.ensemble, args.seed, path, config=args.config, mu_joint=args.mu_joint,
+                        mu_base=args.mu_base, engine=args.engine, workers=args.workers, progress=not args.json,
+                        **({"n_voussoirs": args.voussoirs} if args.voussoirs is not None else {}))
+    s = res.summary() | {"config": args.config, "mu_joint": args.mu_joint, "mu_base": args.mu_base,
+                         "engine": args.engine, "seed": args.seed}
+    if args.json:
+        print_json(s)
+        return 0
+    modes = ", ".join(f"{m} {k}" for m, k in s["modes"].items())
+    print(f"{label} ({args.config}, contact {res.contact:.3f}, edge-loss scatter {scatter_mm:g} mm, seed {args.seed}): "
+          f"lambda {res.lambda_mean:.4f} +- {res.lambda_sd:.4f} over {len(res.lambdas)} realisations ({modes}); "
+          f"{res.wall_s:.0f} s -> {path}")
+    for f in res.failed:
+        print(f"  failed: {f}")
     return 0
 
 
@@ -85,4 +135,11 @@ def register(sub) -> None:
     p.add_argument("--out", default="runs/tilt", help="directory for the result file (default runs/tilt)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")
+    g = p.add_argument_group("ensemble of imperfect realisations (like repeated laboratory tests)")
+    g.add_argument("--ensemble", type=int, default=None, metavar="N", help="tilt N realisations of the imperfect joints")
+    g.add_argument("--seed", type=int, default=None, metavar="S", help="seed of the realisations (required with --ensemble)")
+    g.add_argument("--scatter", type=float, default=None, metavar="MM",
+                   help="standard deviation of each joint edge's contact loss [mm] (default with --contact "
+                        "calibrated: the calibrated scatter)")
+    g.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
     p.set_defaults(func=_run)

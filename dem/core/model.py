@@ -44,7 +44,8 @@ class BodySpec:
 
 @dataclass(frozen=True)
 class JointSpec:
-    """An interface: ``a`` and ``b`` body indices (-1 = base), intrados/extrados end points (2,)."""
+    """An interface: ``a`` and ``b`` body indices (-1 = base), intrados/extrados end points (2,) of
+    the part that touches (the whole joint unless the blocks are relieved)."""
 
     name: str
     a: int
@@ -112,7 +113,8 @@ def _base_pads(xmin: float, xmax: float, depth: float, margin: float) -> np.ndar
 def from_assembly(assembly, name: str | None = None, base_width_factor: float = 2.0) -> Model:
     """Model of a :class:`specimens.blocks.Assembly` (glued or free, any block shape).
 
-    The base is two pads whose top faces are the springing line (y = 0), each reaching
+    Bodies collide on the assembly's (possibly relieved) pieces with the full blocks' masses and
+    inertias. The base is two pads whose top faces are the springing line (y = 0), each reaching
     one ring thickness beyond the springing joint, ``base_width_factor`` times the arch width
     deep along z (so that out-of-plane motion never runs off the support).
     """
@@ -124,7 +126,8 @@ def from_assembly(assembly, name: str | None = None, base_width_factor: float = 
                  np.asarray(b.outline, float))
         for b in assembly.bodies
     )
-    joints = tuple(JointSpec(j.name, int(j.a), int(j.b), np.asarray(j.p_i, float), np.asarray(j.p_e, float),
+    # the detection reads each joint at the ends of its contact: where a hinge of a relieved joint turns
+    joints = tuple(JointSpec(j.name, int(j.a), int(j.b), *(np.asarray(p, float) for p in j.contact_points),
                              np.asarray(j.normal, float)) for j in assembly.joints)
     t = float(arch.t)
     pads = []

@@ -37,15 +37,19 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
     return out
 
 
-def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, workers: int | None = 1) -> dict:
+def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, workers: int | None = 1,
+                     contact: float = 1.0) -> dict:
     """Four-bar (minimised layout) and two-bar analytic domains of ``arch`` for the plain sine
-    (``sine0``, the DEM input) at ``freqs``: name -> :class:`analytic.domain.FailureDomain`."""
+    (``sine0``, the DEM input) at ``freqs``: name -> :class:`analytic.domain.FailureDomain`.
+    With an effective ``contact`` < 1 only the four-bar (the two-bar does not model it)."""
     from analytic import linkage
     from analytic.domain import failure_domain
 
     out = {}
-    fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch, density), density, direction=1)
+    fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch, density, contact), density, direction=1)
     out["four-bar"] = failure_domain(fb, "sine0", freqs, a_max_ratio=10.0, n_scan=24, tol=1e-3, workers=workers)
+    if contact != 1.0:
+        return out
     try:
         tb = linkage.arch_two_bar(arch, density, direction=1)
         out["two-bar"] = failure_domain(tb, "sine0", freqs, a_max_ratio=10.0, n_scan=24, tol=1e-3, workers=workers)

@@ -47,7 +47,7 @@ import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Sequence
+from typing import Mapping, Sequence
 
 import numpy as np
 
@@ -60,7 +60,7 @@ from dem.studies.cases import (
     make_case,
     scaled_protocol,
 )
-from specimens.blocks import DEFAULT_VOUSSOIRS
+from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact
 from specimens.constants import REFERENCE_MU_BASE
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
@@ -214,20 +214,21 @@ def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) ->
 
 
 def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequence[float],
-                    n_voussoirs: int = 8) -> AnalyticCurves:
-    """LP, two-bar and no-sliding references of ``arch`` on the friction values ``mus``."""
+                    n_voussoirs: int = 8, contact: float = 1.0) -> AnalyticCurves:
+    """LP, two-bar and no-sliding references of ``arch`` on the friction values ``mus``; the LP,
+    enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints)."""
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
     from specimens.blocks import discretise
 
-    asm = discretise(arch, n_voussoirs=n_voussoirs, config=config)
+    asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact)
     mu = np.asarray(sorted(set(float(m) for m in mus)), dtype=float)
     lam_lp = np.array([solve_lp(asm, m, mu_base).lam for m in mu])
     lam_tb = np.array([lambda_slide(arch, m) for m in mu])
     lam_ns = float(solve_lp(asm, math.inf, mu_base).lam)
     lam_k = float(enumerate_mechanisms(asm).lam)
-    lam_c = float(continuous_collapse(arch).lam)
+    lam_c = float(continuous_collapse(arch, contact=contact).lam)
     ms_lp = lp_mu_star(asm, mu_base, lam_ns)
     below = above = {}
     if ms_lp is not None and ms_lp > 0:
@@ -358,7 +359,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   mu_base: float = REFERENCE_MU_BASE, out_path: str | os.PathLike = "runs/map/map.h5", workers: int | None = None,
                   scheduler: str | None = None, resume: bool = False, progress: bool = True, refine: int = 3,
                   protocol: dict | None = None, settings: dict | None = None, func: str = DEM_CASE,
-                  n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None) -> MapResult:
+                  n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
+                  contact: float | Mapping[str, float] = 1.0) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each
@@ -367,7 +369,9 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     map without recomputing stored cases. ``protocol`` / ``settings``: overrides (catalogue
     scale) of the tilt protocol / simulation settings (default protocol: ``hold`` with
     ``tol = MAP_TILT_TOL``, LP-started, ``MAP_PROTOCOL``). ``func``: the case function (``DEM_CASE`` or ``SYNTHETIC_CASE``);
-    ``extra``: additional parameters merged into every case (e.g. ``{"synthetic": {...}}``).
+    ``extra``: additional parameters merged into every case (e.g. ``{"synthetic": {...}}``);
+    ``contact``: the effective contact of every joint (DEM cases and the LP / continuous references),
+    or specimen id -> contact.
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
     from dem.studies.sweep import load_study, run_study
@@ -379,13 +383,18 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         raise ArchdemInputError(f"mu_base must be a finite number > 0, got {mu_base!r}")
     if not (isinstance(refine, int) and 0 <= refine <= 20):
         raise ArchdemInputError(f"refine (bisection steps) must be an integer in 0..20, got {refine!r}")
+    contact_of = ({str(k): check_contact(v) for k, v in contact.items()} if isinstance(contact, Mapping)
+                  else {s.id: check_contact(contact) for s in specs})
+    if set(contact_of) != {s.id for s in specs}:
+        raise ArchdemInputError("give the effective contact of every specimen of the map")
     protocol = dict(protocol if protocol is not None else MAP_PROTOCOL)
     scaled_protocol(protocol, 1.0)  # validate in the main process
     study_attrs = {"study": STUDY_KIND, "config": config, "mu_base": float(mu_base), "protocol": protocol,
-                   "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs)}
+                   "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs),
+                   **({} if set(contact_of.values()) == {1.0} else {"contact": contact_of})}
 
     def case(s, mu: float) -> dict:
-        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, settings, n_voussoirs, time_scale)
+        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, settings, n_voussoirs, time_scale, contact_of[s.id])
         if extra:
             c.update(extra)
         return c
@@ -436,7 +445,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         th = threshold_bracket([p.mu for p in pts], [p.mode for p in pts])
         curve_mus = sorted(set(grid) | set(np.round(np.linspace(min(grid), max(grid), 49), 9).tolist()))
         smaps.append(SpecimenMap(s.id, s.arch, config, float(mu_base), pts, th,
-                                 analytic_curves(s.arch, config, mu_base, curve_mus, n_voussoirs)))
+                                 analytic_curves(s.arch, config, mu_base, curve_mus, n_voussoirs, contact_of[s.id])))
     recs = [by_key[case_key(c)] for c in all_cases if case_key(c) in by_key]
     return MapResult(Path(out_path), config, float(mu_base), grid, smaps, len(recs), sum(not r.ok for r in recs),
                      time.perf_counter() - t0, [r.wall for r in recs if r.ok], rounds, definitions())

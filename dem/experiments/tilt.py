@@ -143,6 +143,7 @@ class TiltResult:
             "joints": [j.to_dict() if hasattr(j, "to_dict") else j for j in self.joints],
             "bracket": list(self.bracket), "n_sims": self.n_sims, "wall_s": self.wall_s,
             "protocol": self.protocol.kind, "config": self.model.source.get("config", ""),
+            "contact": self.model.source.get("contact", 1.0),
             "mu_joint": self.settings.mu_joint, "mu_base": self.settings.mu_base, "planar": self.settings.planar,
             "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
             "out_of_plane": self.out_of_plane, "result_file": self.result_file,

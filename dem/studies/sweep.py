@@ -373,6 +373,32 @@ class _LocalPool:
             self.ex.shutdown(wait=True)
 
 
+#: Seconds to wait for a Dask scheduler to accept a connection before the address is refused.
+SCHEDULER_CONNECT_TIMEOUT = 3.0
+
+
+def check_scheduler(address: str, timeout: float = SCHEDULER_CONNECT_TIMEOUT) -> None:
+    """Refuse, in one line, a scheduler address that is not ``tcp://HOST:PORT`` or where nothing
+    accepts a connection within ``timeout`` [s] (Dask's own client would retry for its full timeout)."""
+    import socket
+    from urllib.parse import urlsplit
+
+    from dem.core.extras import require
+
+    require("distributed", "a Dask scheduler (--scheduler)")  # a missing extra is named first
+    try:
+        u = urlsplit(str(address))
+        host, port = u.hostname, u.port
+    except ValueError:
+        host = port = None
+    if u.scheme != "tcp" or not host or port is None:
+        raise ArchdemInputError(f"a Dask scheduler address is tcp://HOST:PORT, got {address!r}")
+    try:
+        socket.create_connection((host, port), timeout=timeout).close()
+    except OSError as exc:
+        raise ArchdemInputError(f"cannot connect to the Dask scheduler {address}: {exc}") from None
+
+
 class _DaskPool:
     def __init__(self, address: str):
         from dem.core.extras import require
@@ -432,6 +458,8 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
         raise ArchdemInputError(f"duplicate case in the study: {canonical_json(dup)}")
     if workers is not None and (int(workers) != workers or workers < 1):
         raise ArchdemInputError(f"workers must be a positive integer, got {workers!r}")
+    if scheduler:
+        check_scheduler(scheduler)  # before the study file is made: a refused address leaves nothing behind
     done = _open_study(path, func, study_attrs, seed, resume)
     todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
     if todo:

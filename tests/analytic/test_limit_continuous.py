@@ -63,7 +63,7 @@ def test_objective_at_discrete_hinges_reproduces_enumeration():
 def test_lambda_grows_with_thickness(results):
     for sh in ("Sh02", "Sh06", "Sh1"):
         lams = [results[s.id].lam for s in CATALOGUE if s.id.startswith(sh + "-")]
-        assert all(b > a for a, b in zip(lams, lams[1:]))
+        assert len(lams) >= 3 and all(b > a for a, b in zip(lams, lams[1:]))
     arch = get_specimen("Sh06-Sd015").arch
     # effective thickness 0.8 t = a thinner ring: lower multiplier, equal to the thinner arch's
     assert continuous_collapse(arch, effective_thickness=0.8).lam < results["Sh06-Sd015"].lam
@@ -91,10 +91,11 @@ def test_symmetry_and_result_fields(results):
 
 def test_round_arch_minimum_thickness():
     """Milankovitch / Heyman: the semicircle with radial joints stands under self-weight down to
-    t/R = 0.1075 (R = mean radius); lambda(t) = 0 there. 1 % as in the issue."""
+    t/R = 0.1075 (R = mean radius); lambda(t) = 0 there."""
     f = lambda t: continuous_collapse(PointedArch.round(1.0, t, width=1.0)).lam  # noqa: E731
     t_min = brentq(f, 0.09, 0.13, xtol=1e-6)
-    assert t_min == pytest.approx(0.1075, rel=0.01)
+    # measured 0.107478 (-0.02 %); 0.1 %: twice the rounding of the 4-digit reference (+-0.05 %)
+    assert t_min == pytest.approx(0.1075, rel=1e-3)
 
 
 def test_min_spacing_constraint():

@@ -61,11 +61,14 @@ def test_sliding_states_reported_for_low_friction():
 
 
 def test_effective_contact_lowers_lambda_and_lp_agrees():
-    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
-    full = enumerate_mechanisms(asm)
-    red = enumerate_mechanisms(asm, contact_fraction=0.8)
-    assert red.lam < full.lam
-    assert solve_lp(asm, math.inf, math.inf, contact_fraction=0.8).lam == pytest.approx(red.lam, rel=1e-6)
+    arch = get_specimen("Sh06-Sd015").arch
+    full = enumerate_mechanisms(discretise(arch, config="glued"))
+    asm = discretise(arch, config="glued", contact=0.8)
+    red = enumerate_mechanisms(asm)
+    assert red.lam < full.lam and red.contact == 0.8
+    # identity: the LP with no sliding is the kinematic minimum, at any contact (LP tolerance 1e-6)
+    lp = solve_lp(asm, math.inf, math.inf)
+    assert lp.lam == pytest.approx(red.lam, rel=1e-6) and lp.contact == 0.8
 
 
 def test_macro_block_mass_properties():
@@ -150,8 +153,6 @@ def test_bad_input():
     asm = discretise(get_specimen("Sh06-Sd015").arch)
     with pytest.raises(ArchdemInputError):
         solve_lp(asm, -1.0, 1.0)
-    with pytest.raises(ArchdemInputError):
-        enumerate_mechanisms(asm, contact_fraction=0.0)
     with pytest.raises(ArchdemInputError):
         enumerate_mechanisms(asm, load_sign=0)
 

@@ -166,3 +166,65 @@ def test_round_arch_discretisation():
 def test_bad_discretisation(kw, match):
     with pytest.raises(ArchdemInputError, match=match):
         discretise(get_specimen("Sh06-Sd015").arch, **kw)
+
+
+# --- effective contact: relieved joints -------------------------------------------------------
+@pytest.mark.parametrize("shape", ["linearised", "curved"])
+@pytest.mark.parametrize("config", ["free", "glued"])
+def test_full_contact_leaves_the_blocks_as_sawn(shape, config):
+    a = get_specimen("Sh06-Sd010").arch
+    full, default = discretise(a, config=config, shape=shape, contact=1.0), discretise(a, config=config, shape=shape)
+    for b1, b2 in zip(full.bodies, default.bodies):
+        assert len(b1.pieces) == len(b2.pieces)
+        for p1, p2 in zip(b1.pieces, b2.pieces):
+            assert np.array_equal(p1, p2)
+    assert all(np.array_equal(j.contact_points[0], j.p_i) and np.array_equal(j.contact_points[1], j.p_e)
+               for j in full.joints)
+
+
+def _on_segment(p, a, b, tol):
+    """Distance of ``p`` from the line a-b, and its position along a-b (0 at a, 1 at b)."""
+    d = b - a
+    s = float(np.dot(p - a, d) / np.dot(d, d))
+    return abs(float(d[0] * (p - a)[1] - d[1] * (p - a)[0])) / np.linalg.norm(d), s
+
+
+@pytest.mark.parametrize("sid", ["Sh02-Sd015", "Sh1-Sd025"])
+@pytest.mark.parametrize("shape", ["linearised", "curved"])
+@pytest.mark.parametrize("config", ["free", "glued"])
+@pytest.mark.parametrize("c", [0.8, 0.5, 0.2])
+def test_relieved_joints_touch_only_within_the_central_fraction(sid, shape, config, c):
+    a = get_specimen(sid).arch
+    full = discretise(a, config=config, shape=shape)
+    asm = discretise(a, config=config, shape=shape, contact=c)
+    tol = 1e-9 * a.Rp
+    for b, bf in zip(asm.bodies, full.bodies):
+        # masses, centroids and inertias are the full blocks'
+        assert b.mass == bf.mass and np.array_equal(b.inertia, bf.inertia) and np.array_equal(b.outline, bf.outline)
+        # each relieved piece is convex, smaller than its sawn piece, and every vertex lies on the
+        # sawn piece's boundary (so, being convex, it lies inside it)
+        assert len(b.pieces) == len(bf.pieces)
+        for p, pf in zip(b.pieces, bf.pieces):
+            assert is_convex(p) and 0 < signed_area(p) <= signed_area(pf)
+            edges = list(zip(pf, np.roll(pf, -1, axis=0)))
+            for q in p:
+                assert any(_on_segment(q, e0, e1, tol)[0] < tol and -1e-12 <= _on_segment(q, e0, e1, tol)[1] <= 1 + 1e-12
+                           for e0, e1 in edges)
+    for j in asm.joints:
+        c_i, c_e = j.contact_points
+        # the ends of the central fraction: c x depth apart, centred on the joint
+        assert np.linalg.norm(c_e - c_i) == pytest.approx(c * j.length, rel=1e-12)
+        np.testing.assert_allclose(0.5 * (c_i + c_e), 0.5 * (j.p_i + j.p_e), atol=tol)
+        on_joint = []
+        for k in (j.a, j.b):
+            if k < 0:
+                continue
+            for p in asm.bodies[k].pieces:
+                for q in p:
+                    dist, s = _on_segment(q, j.p_i, j.p_e, tol)
+                    if dist < tol:
+                        on_joint.append(s)
+        # every point of either body on the joint's plane is within the contact, and both ends are there
+        s_lo, s_hi = (1 - c) / 2, (1 + c) / 2
+        assert on_joint and min(on_joint) == pytest.approx(s_lo, abs=1e-9) and max(on_joint) == pytest.approx(s_hi, abs=1e-9)
+        assert all(s_lo - 1e-9 <= s <= s_hi + 1e-9 for s in on_joint)

@@ -20,6 +20,10 @@ docs/decisions/006-solver-settings.md):
   (docs/decisions/006-solver-settings.md#pybullet-body-type);
 * every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
   gravity of every step) is first made machine-independent (:mod:`dem.core.engines.inputs`);
+* relieved joints (effective contact < 1 or imperfect bands): Bullet's hull builder snaps hull
+  vertices to a grid of its bounding box, which moves a relieved face's contact ends and tilts
+  the joint's two faces against each other; each relieved face collides instead on a thin pad
+  built in its own frame, where its vertices stay exact (docs/engines.md#9-relieved-joints-in-pybullet);
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
@@ -34,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from dem.core.engines.base import Contacts, Engine
-from dem.core.engines.inputs import accel, on_grid, principal_frame, significant
+from dem.core.engines.inputs import QUAT_GRID, accel, on_grid, principal_frame, significant
 from dem.core.model import Model
 from dem.core.settings import Settings
 from specimens.mesh import prism
@@ -66,6 +70,49 @@ def offset_polygon(poly: np.ndarray, d: float) -> np.ndarray:
     n = np.c_[e[:, 1], -e[:, 0]] / np.linalg.norm(e, axis=1, keepdims=True)  # outward for ccw
     n_prev = np.roll(n, 1, axis=0)
     return P + d * (n + n_prev) / (1.0 + (n * n_prev).sum(1, keepdims=True))
+
+
+#: Depth of the collision pad of a relieved joint face [x the model's size, the joint depth of an arch]:
+#: the recessed rest of the block stays beyond Bullet's contact distance (docs/engines.md#9-relieved-joints-in-pybullet).
+RELIEF_PAD = 0.05
+
+
+def _clip(poly: np.ndarray, p0: np.ndarray, n_in: np.ndarray, h: float) -> np.ndarray:
+    """The part ``(x - p0) . n_in >= h`` of a convex counter-clockwise polygon."""
+    f = (poly - p0) @ n_in - h
+    out = []
+    for k in range(len(poly)):
+        a, b, fa, fb = poly[k], poly[(k + 1) % len(poly)], f[k], f[(k + 1) % len(poly)]
+        if fa >= 0:
+            out.append(a)
+        if (fa >= 0) != (fb >= 0):
+            out.append(a + (b - a) * (fa / (fa - fb)))
+    return np.array(out)
+
+
+def is_relieved(model: Model) -> bool:
+    """True if the model's joints touch on part of their depth (effective contact or bands)."""
+    return float(model.source.get("contact", 1.0)) < 1.0 or bool(model.source.get("bands"))
+
+
+def relief_pieces(model: Model, k: int) -> list[tuple[np.ndarray, bool]]:
+    """Collision polygons of body ``k`` of a relieved model, each with a flag "own frame": its
+    pieces recessed by h = ``RELIEF_PAD`` x ``model.size`` behind each of its joint faces, plus one
+    pad (rectangle A_i, A_e, A_e + h n, A_i + h n, n into the body) per joint face."""
+    pieces = [np.asarray(p, float) for p in model.bodies[k].pieces]
+    h = RELIEF_PAD * float(model.size)
+    pads = []
+    for j in model.joints:
+        if k not in (j.a, j.b):
+            continue
+        A_i, A_e = np.asarray(j.p_i, float), np.asarray(j.p_e, float)  # the contact ends
+        n_in = np.asarray(j.normal, float) * (1.0 if k == j.b else -1.0)
+        pieces = [q for q in (_clip(p, A_i, n_in, h) for p in pieces) if len(q) >= 3]
+        pad = np.array([A_i, A_e, A_e + h * n_in, A_i + h * n_in])
+        if (pad[1, 0] - pad[0, 0]) * (pad[2, 1] - pad[0, 1]) - (pad[1, 1] - pad[0, 1]) * (pad[2, 0] - pad[0, 0]) < 0:
+            pad = pad[::-1].copy()
+        pads.append(pad)
+    return [(p, False) for p in pieces] + [(p, True) for p in pads]
 
 
 def _write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -123,22 +170,41 @@ class PyBulletEngine(Engine):
         n_files = [0]
 
         def shape(polys, width, R, c, z_off):
-            files = []
+            files, frames = [], []
             for poly in polys:
-                if settings.inflate_normal:
-                    m = prism(offset_polygon(poly, settings.inflate), width + 2 * settings.inflate)
+                own = False
+                if isinstance(poly, tuple):  # (polygon, own frame) of a relieved model
+                    poly, own = poly
+                if own:  # a pad: vertices in its own frame (x along its first edge), pushed out along the normals
+                    e = poly[1] - poly[0]
+                    ang = math.atan2(e[1], e[0])
+                    o = on_grid(poly.mean(axis=0))
+                    Rz = np.eye(3)
+                    Rz[:2, :2] = [[math.cos(ang), -math.sin(ang)], [math.sin(ang), math.cos(ang)]]
+                    m = prism(offset_polygon((poly - o) @ Rz[:2, :2], settings.inflate), width + 2 * settings.inflate)
+                    vb = on_grid(np.asarray(m.vertices, float))
+                    frames.append(([float(x) for x in on_grid((np.array([o[0], o[1], z_off]) - c) @ R)],
+                                   tuple(float(x) for x in on_grid(_rot_to_quat(R.T @ Rz), QUAT_GRID))))
                 else:
-                    m = prism(poly, width, settings.inflate)
-                v = np.asarray(m.vertices, float).copy()
-                v[:, 2] += z_off
-                vb = on_grid((v - c) @ R)  # = R^T (v - c) row-wise, on the 1 nm grid (dem.core.engines.inputs)
+                    if settings.inflate_normal:
+                        m = prism(offset_polygon(poly, settings.inflate), width + 2 * settings.inflate)
+                    else:
+                        m = prism(poly, width, settings.inflate)
+                    v = np.asarray(m.vertices, float).copy()
+                    v[:, 2] += z_off
+                    vb = on_grid((v - c) @ R)  # = R^T (v - c) row-wise, on the 1 nm grid (dem.core.engines.inputs)
+                    frames.append(([0.0, 0.0, 0.0], (0.0, 0.0, 0.0, 1.0)))
                 f = self._tmp / f"piece{n_files[0]}.obj"
                 n_files[0] += 1
                 _write_obj(f, vb, np.asarray(m.faces))
                 files.append(str(f))
             if len(files) == 1:
-                return p.createCollisionShape(pb.GEOM_MESH, fileName=files[0], flags=flags)
-            return p.createCollisionShapeArray([pb.GEOM_MESH] * len(files), fileNames=files, flags=[flags] * len(files))
+                return p.createCollisionShape(pb.GEOM_MESH, fileName=files[0], flags=flags,
+                                              collisionFramePosition=frames[0][0],
+                                              collisionFrameOrientation=frames[0][1])
+            return p.createCollisionShapeArray([pb.GEOM_MESH] * len(files), fileNames=files, flags=[flags] * len(files),
+                                               collisionFramePositions=[f[0] for f in frames],
+                                               collisionFrameOrientations=[f[1] for f in frames])
 
         # base: identity frame; static, or (driven) dynamic and heavy with its centre of mass at the origin
         bshape = shape(model.base.pieces, model.base.width, np.eye(3), np.zeros(3), 0.0)
@@ -153,11 +219,12 @@ class PyBulletEngine(Engine):
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
+        relieved = is_relieved(model)
         for k, b in enumerate(model.bodies):
             R, I, q = principal_frame(b.inertia)  # machine-independent (dem.core.engines.inputs)
             c = on_grid(b.centroid)
             mass = significant(b.mass)
-            s = shape(b.pieces, b.width, R, c, float(c[2]))
+            s = shape(relief_pieces(model, k) if relieved else b.pieces, b.width, R, c, float(c[2]))
             bid = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
                                     baseOrientation=q)
             p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],

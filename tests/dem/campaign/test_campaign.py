@@ -10,11 +10,12 @@ from specimens.catalogue import select_specimens
 
 
 @pytest.mark.parametrize("quick, units", [
-    # quick: 11 tilts at the reference friction; 2 specimens x (4 frictions + 1 bisection);
-    # Sh02-Sd020 at 2 and 6 Hz; one record
-    (True, {"tilt": 11, "map": 10, "shake": 2, "record": 1}),
-    # full: 11 x 2 frictions; 11 x (13 + 3); the six Sd = 0.15 / 0.20 specimens x 5 frequencies; 3 records
-    (False, {"tilt": 22, "map": 176, "shake": 30, "record": 3}),
+    # quick: 11 tilts at the reference friction; 6 tested specimens x 3 realisations + 5 predictions;
+    # 2 specimens x (4 frictions + 1 bisection); Sh02-Sd020 at 2 and 6 Hz; one record
+    (True, {"tilt": 11, "lab": 6 * 3 + 5, "map": 10, "shake": 2, "record": 1}),
+    # full: 11 x 2 frictions; 6 x 10 realisations + 5; 11 x (13 + 3); the six Sd = 0.15 / 0.20
+    # specimens x 5 frequencies; 3 records
+    (False, {"tilt": 22, "lab": 6 * 10 + 5, "map": 176, "shake": 30, "record": 3}),
 ])
 def test_estimate_counts_the_work_of_each_step(quick, units, tmp_path):
     ctx = CampaignContext(out=Path(tmp_path), specimens=select_specimens("all"), quick=quick, workers=2)
@@ -45,11 +46,26 @@ def test_estimate_scales_with_the_measured_machine_speed(tmp_path):
 
 
 @pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
-def test_machine_speed_times_the_engine_it_is_given(engine):
-    from dem.campaign.estimate import machine_speed
+def test_machine_speed_times_the_engine_it_is_given(engine, monkeypatch):
+    # a stand-in clock that advances 1 ms per step of this engine's class alone: the speed must be
+    # exactly 1 ms / dt wall seconds per simulated second (steps of another engine would read 0)
+    import time
 
-    s = machine_speed(engine, steps=20, repeats=1)
-    assert 0 < s < 1e3  # wall seconds per simulated second: positive and finite
+    from dem.campaign.estimate import machine_speed
+    from dem.core.engines import get_engine
+    from dem.core.settings import Settings
+
+    cls = type(get_engine(engine))
+    real_step, clock = cls.step, [0.0]
+
+    def step(self, n=1):
+        real_step(self, n)
+        clock[0] += 1e-3 * n
+
+    monkeypatch.setattr(cls, "step", step)
+    monkeypatch.setattr(time, "perf_counter", lambda: clock[0])
+    s = machine_speed(engine, steps=20, repeats=3)
+    assert s == pytest.approx(1e-3 / Settings(engine=engine).dt, rel=1e-12)
 
 
 def test_the_record_step_finds_its_record():

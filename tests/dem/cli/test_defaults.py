@@ -14,6 +14,7 @@ from dem.cli.common import default_of
 
 def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
+    from analytic.calibration import CALIBRATION_FILE
     from analytic.domain import failure_domain
     from analytic.summary import analyse
     from dem.campaign.context import CampaignContext
@@ -36,13 +37,14 @@ def _lib():
         "draw": {"config": default_of(discretise, "config"), "shape": default_of(discretise, "shape")},
         "analytic": {"config": default_of(discretise, "config"),
                      "effective_thickness": default_of(analyse, "effective_thickness"),
-                     "contact_fraction": default_of(analyse, "contact_fraction"),
                      "min_spacing": default_of(analyse, "min_spacing")},
-        "campaign": {"config": default_of(CampaignContext, "config"), "engine": s.engine},
+        "campaign": {"config": default_of(CampaignContext, "config"), "engine": s.engine,
+                     "contact": default_of(CampaignContext, "contact")},
+        "calibrate": {"out": str(CALIBRATION_FILE)},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
                 "mu_base": default_of(catalogue_map, "mu_base"), "refine": default_of(catalogue_map, "refine"),
-                "tol": MAP_TILT_TOL, "engine": s.engine},
+                "tol": MAP_TILT_TOL, "engine": s.engine, "contact": default_of(catalogue_map, "contact")},
         "domain": {"amax": default_of(failure_domain, "a_max_ratio"), "scan": default_of(failure_domain, "n_scan"),
                    "tol": default_of(failure_domain, "tol"), "config": default_of(dem_failure_domain, "config")},
         "shake": {**sim, "tail": sp.tail, "load": sp.load},
@@ -66,7 +68,7 @@ CLI_ONLY = {
 # A minimal command line of every sub-command.
 ARGV = {
     "specimens": [], "mesh": ["Sh02-Sd015", "--out", "o"], "draw": ["Sh02-Sd015", "--out", "o.png"],
-    "analytic": ["Sh02-Sd015"], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
+    "analytic": ["Sh02-Sd015"], "calibrate": [], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
     "threshold": ["Sh02-Sd015", "--sine", "4"], "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
 }
@@ -122,6 +124,7 @@ def test_help_texts_show_the_library_values():
         assert f"else {SPECIMEN_WIDTH:g})" in _help(cmd, "width")
         assert f"(default {DEFAULT_VOUSSOIRS})" in _help(cmd, "voussoirs")
         assert f"(default {DEFAULT_DENSITY:g})" in _help(cmd, "density")
+        assert f"(default {default_of(discretise, 'contact'):g}:" in _help(cmd, "contact")
     for cmd in ("tilt", "shake", "threshold"):
         assert f"(default {s.mu_joint:g})" in _help(cmd, "mu_joint")
         assert f"(default {s.mu_base:g})" in _help(cmd, "mu_base")

@@ -11,6 +11,16 @@ SMALL = ["--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2"]
 DATA = Path(__file__).resolve().parents[2] / "data" / "ground_motions"
 
 
+def _lp_lambda() -> float:
+    """The LP multiplier of SMALL (glued) at the default friction of joints and base."""
+    from analytic.limit_discrete import solve_lp
+    from dem.core.settings import Settings
+    from specimens import PointedArch, discretise
+
+    arch = PointedArch.from_ratios(*(float(SMALL[k + 1]) for k in (0, 2, 4)))
+    return solve_lp(discretise(arch, n_voussoirs=2, config="glued"), Settings().mu_joint, Settings().mu_base).lam
+
+
 def test_bad_input_exit_2(capsys, tmp_path):
     cases = [
         ["shake", "Sh02-Sd020"],  # no input
@@ -76,12 +86,34 @@ def test_threshold_json(tmp_path, capsys):
                "--tol", "0.05", "--workers", "1", "--tail", "0.5"])
     assert rc == 0
     d = json.loads(capsys.readouterr().out)
-    assert "amplitude_g" in d and "bands" in d
-    if d["amplitude_g"] is not None:
-        lo, hi = d["bracket_g"]
-        assert hi == d["amplitude_g"] and hi / lo - 1 <= 0.05
-        # physically required: no collapse below the static onset
-        assert d["amplitude_g"] >= d["lambda"] * 0.99
+    assert d["lambda"] == pytest.approx(_lp_lambda(), rel=1e-12)  # the static onset: the LP of the same blocks
+    assert d["amplitude_g"] is not None, "no collapse found up to 1.2 g"
+    lo, hi = d["bracket_g"]
+    assert hi == d["amplitude_g"] and hi / lo - 1 <= 0.05
+    # both ends of the bracket were simulated, with the outcomes that make it a threshold
+    outcome = {r["amplitude_g"]: r["collapsed"] for r in d["runs"]}
+    assert outcome[hi] and not outcome[lo]
+    # physically required: no collapse below the static onset
+    assert d["amplitude_g"] >= d["lambda"] * 0.99
+
+
+def test_shake_and_threshold_take_the_effective_contact(tmp_path, capsys):
+    from analytic.limit_discrete import solve_lp
+    from dem.core.settings import Settings
+    from specimens import PointedArch, discretise
+
+    assert main(["shake", *SMALL, "--contact", "0.8", "--sine", "4", "--amplitude", "0.1", "--tail", "0.2",
+                 "--json", "--out", str(tmp_path)]) == 0
+    assert json.loads(capsys.readouterr().out)["contact"] == 0.8
+    assert main(["threshold", *SMALL, "--contact", "0.8", "--sine", "5", "--json", "--a-max", "1.2",
+                 "--scan-ratio", "1.4", "--tol", "0.05", "--workers", "1", "--tail", "0.5"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    relieved = discretise(PointedArch.from_ratios(0.6, 0.25, 0.2), n_voussoirs=2, config="glued", contact=0.8)
+    # the static onset is the LP of the relieved blocks, below the full blocks'
+    assert d["contact"] == 0.8 and d["lambda"] == pytest.approx(
+        solve_lp(relieved, Settings().mu_joint, Settings().mu_base).lam, rel=1e-12)
+    assert d["lambda"] < 0.95 * _lp_lambda()
+    assert d["amplitude_g"] is not None and d["amplitude_g"] >= 0.99 * d["lambda"]
 
 
 def test_domain_engine_dem(tmp_path, capsys):
@@ -89,6 +121,7 @@ def test_domain_engine_dem(tmp_path, capsys):
                "--plot", str(tmp_path / "d.png"), "--amax", "3"])
     assert rc == 0
     d = json.loads(capsys.readouterr().out)
-    assert "points" in d and "bands" in d
-    assert all(p["amplitude_g"] >= d["lambda"] * 0.99 for p in d["points"])
+    assert d["lambda"] == pytest.approx(_lp_lambda(), rel=1e-12)
+    assert [p["x"] for p in d["points"]] == [5.0]  # a collapse was found at the one frequency
+    assert d["points"][0]["amplitude_g"] >= d["lambda"] * 0.99  # not below the static onset
     assert (tmp_path / "d.png").stat().st_size > 0

@@ -54,3 +54,58 @@ def test_python_call_gives_the_cli_answer(tmp_path, capsys):
     cli = json.loads(capsys.readouterr().out)
     py = tilt(discretise(PointedArch.from_ratios(0.6, 0.25, 0.2), n_voussoirs=2))
     assert py.lam == cli["lambda"] and py.n_sims == cli["n_sims"] and list(py.bracket) == cli["bracket"]
+
+
+SMALL = ["--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2"]
+
+
+def test_contact_is_reported_and_lowers_lambda(tmp_path, capsys):
+    assert main(["tilt", *SMALL, "--json", "--out", str(tmp_path)]) == 0
+    full = json.loads(capsys.readouterr().out)
+    assert main(["tilt", *SMALL, "--contact", "0.7", "--json", "--out", str(tmp_path)]) == 0
+    part = json.loads(capsys.readouterr().out)
+    assert full["contact"] == 1.0 and part["contact"] == 0.7
+    assert part["lambda"] < 0.85 * full["lambda"]
+
+
+def test_ensemble_of_zero_scatter_repeats_the_single_tilt_bit_for_bit(tmp_path, capsys):
+    """Zero perturbation reproduces the deterministic run: every realisation gives the tilt test's lambda."""
+    assert main(["tilt", *SMALL, "--contact", "0.8", "--json", "--out", str(tmp_path)]) == 0
+    single = json.loads(capsys.readouterr().out)
+    assert main(["tilt", *SMALL, "--contact", "0.8", "--ensemble", "2", "--seed", "4", "--scatter", "0",
+                 "--workers", "1", "--json", "--out", str(tmp_path)]) == 0
+    ens = json.loads(capsys.readouterr().out)
+    assert ens["lambdas"] == [single["lambda"]] * 2 and ens["lambda_sd"] == 0.0
+    assert ens["modes"] == {single["mode"]: 2} and ens["seeds"] == [[4, 0], [4, 1]] and ens["failed"] == []
+
+
+def test_ensemble_realisations_differ_and_are_reproducible(tmp_path, capsys):
+    args = ["tilt", *SMALL, "--contact", "0.8", "--ensemble", "3", "--seed", "9", "--scatter", "2",
+            "--workers", "2", "--json", "--out", str(tmp_path)]
+    assert main(args) == 0
+    a = json.loads(capsys.readouterr().out)
+    assert main(args) == 0
+    b = json.loads(capsys.readouterr().out)
+    assert a["lambdas"] == b["lambdas"] and a["result_file"] != b["result_file"]
+    assert len(set(a["lambdas"])) > 1 and a["lambda_sd"] > 0
+
+
+@pytest.mark.parametrize("extra, msg", [
+    (["--contact", "0"], "--contact"),
+    (["--contact", "1.5"], "--contact"),
+    (["--contact", "abc"], "--contact"),
+    (["--ensemble", "3"], "--seed"),
+    (["--seed", "3"], "--ensemble"),
+    (["--ensemble", "3", "--seed", "1"], "--scatter"),
+    (["--ensemble", "0", "--seed", "1", "--scatter", "1"], "1 to 10000"),
+    (["--ensemble", "3", "--seed", "1", "--scatter", "-1"], "--scatter"),
+])
+def test_bad_contact_and_ensemble_input_exit_2_in_one_line(tmp_path, capsys, extra, msg):
+    try:
+        rc = main(["tilt", *SMALL, "--out", str(tmp_path), *extra])
+    except SystemExit as exc:  # an option's own check is argparse's: it exits
+        rc = exc.code
+    assert rc == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and msg in err
+    assert list(tmp_path.iterdir()) == []

@@ -86,3 +86,141 @@ def test_tracker_vectorised_displacements_match_per_body_ones():
     pos1, R1 = _pose_rotated(blk, (B / 2, 0.0), -0.02)
     far = math.hypot(B, H)  # the upper left corner is the farthest from the pivot (right corner)
     assert PointTracker(blk).max_displacement(pos1, R1)[0] == pytest.approx(2 * far * math.sin(0.01), rel=1e-12)
+
+
+# ------------------------------------------------------- thresholds of the joint states and the mode
+# The window increment ``w`` passed to classify is chosen so that the imposed opening or slip is
+# 0.9 x or 1.1 x the settings' fraction of it; the defaults, and unequal fractions so that a rule
+# reading the other fraction is caught.
+@pytest.fixture(params=[Settings(), Settings(hinge_fraction=0.03, slide_fraction=0.08)], ids=["default", "unequal"])
+def S(request):
+    return request.param
+
+
+def _rest(m):
+    c0 = np.array([b.centroid for b in m.bodies])
+    return c0, np.repeat(np.eye(3)[None], m.n_bodies, 0)
+
+
+def _rocked(m, angle, slip=0.0, pivot=(B / 2, 0.0)):
+    """The single block slid by ``slip`` along x, then rotated by ``angle`` about its slid base corner."""
+    R = _rot_about(pivot, angle)
+    p = np.array([pivot[0] + slip, pivot[1], 0.0])
+    return (p + R @ (m.bodies[0].centroid + np.array([slip, 0.0, 0.0]) - p))[None], R[None]
+
+
+@pytest.mark.parametrize("f, state, mode", [(0.9, "closed", "none"), (1.1, "hinge", "rocking")])
+def test_hinge_needs_an_opening_above_hinge_fraction_of_the_window(f, state, mode, S):
+    m = single_block(B, H)
+    pos1, R1 = _rocked(m, -0.02)
+    opening = B * math.sin(0.02)
+    states, md = classify(m, S, *_rest(m), pos1, R1, opening / (f * S.hinge_fraction))
+    assert (states[0].state, md) == (state, mode)
+    assert states[0].opening == pytest.approx(opening, rel=1e-9)
+
+
+@pytest.mark.parametrize("f, state, mode", [(0.9, "closed", "none"), (1.1, "slide", "sliding")])
+def test_slide_needs_a_slip_above_slide_fraction_of_the_window(f, state, mode, S):
+    m = single_block(B, H)
+    pos0, R0 = _rest(m)
+    states, md = classify(m, S, pos0, R0, pos0 + [0.003, 0.0, 0.0], R0, 0.003 / (f * S.slide_fraction))
+    assert (states[0].state, md) == (state, mode)
+
+
+@pytest.mark.parametrize("f, state", [(0.9, "closed"), (1.1, "open")])
+def test_lift_off_parts_the_joint_above_the_hinge_fraction(f, state, S):
+    # both ends open by the lift; the slip of a parted joint is not a slide
+    from dem.experiments.friction_map import SLIDING_MODES
+
+    m = single_block(B, H)
+    pos0, R0 = _rest(m)
+    lift = 0.002
+    states, _ = classify(m, S, pos0, R0, pos0 + [0.0, lift, 0.0], R0, lift / (f * S.hinge_fraction))
+    assert states[0].state == state and states[0].face == ""
+    states, md = classify(m, S, pos0, R0, pos0 + [10 * lift, lift, 0.0], R0, lift / (f * S.hinge_fraction))
+    assert states[0].state == ("slide" if f < 1 else "open")
+    assert (md in SLIDING_MODES) is (f < 1)
+
+
+@pytest.mark.parametrize("f_open, f_slip, state", [(1.1, 1.1, "hinge+slide"), (0.9, 1.1, "slide"),
+                                                     (1.1, 0.9, "hinge"), (0.9, 0.9, "closed")])
+def test_a_joint_that_rotates_and_slips_is_hinge_plus_slide(f_open, f_slip, state, S):
+    m = single_block(B, H)
+    w = 0.002
+    angle = -math.asin(f_open * S.hinge_fraction * w / B)  # opens the intrados end by f_open x the fraction
+    pos1, R1 = _rocked(m, angle, slip=f_slip * S.slide_fraction * w)
+    states, _ = classify(m, S, *_rest(m), pos1, R1, w)
+    assert states[0].state == state and states[0].face == ("extrados" if f_open > 1 else "")
+    # slip read at the pivot end: the imposed slip, not the pivot's plus the lifted corner's B (1 - cos)
+    assert abs(states[0].slip) == pytest.approx(f_slip * S.slide_fraction * w, rel=1e-9)
+
+
+@pytest.mark.parametrize("angle, face", [(-0.02, "extrados"), (0.02, "intrados")])
+def test_hinge_face_is_the_pivot_end_and_slip_is_read_there(angle, face, S):
+    m = single_block(B, H)
+    pivot = (B / 2, 0.0) if face == "extrados" else (-B / 2, 0.0)
+    pos1, R1 = _rocked(m, angle, slip=0.001, pivot=pivot)
+    states, _ = classify(m, S, *_rest(m), pos1, R1, 0.001)
+    assert (states[0].state, states[0].face) == ("hinge+slide", face)
+    assert abs(states[0].slip) == pytest.approx(0.001, rel=1e-9)
+    assert states[0].rotation == pytest.approx(angle, rel=1e-9)
+
+
+@pytest.mark.parametrize("ratio, mode", [(0.9, "mixed"), (1.1, "sliding")])
+def test_sliding_needs_slip_at_least_the_opening(ratio, mode, S):
+    # sliding: summed slip >= half of summed slip + opening, i.e. slip >= opening; else mixed
+    m = single_block(B, H)
+    opening = B * math.sin(0.02)
+    pos1, R1 = _rocked(m, -0.02, slip=ratio * opening)
+    states, md = classify(m, S, *_rest(m), pos1, R1, opening)
+    assert states[0].state == "hinge+slide" and md == mode
+
+
+def _stack(b=B, h=H):
+    """Two blocks b x h stacked on the base: joint B0 (base - block 0), J1 (block 0 - block 1)."""
+    from dem.core.model import BaseSpec, BodySpec, JointSpec, Model
+
+    def block(k):
+        poly = np.array([[-b / 2, k * h], [b / 2, k * h], [b / 2, (k + 1) * h], [-b / 2, (k + 1) * h]])
+        return BodySpec(f"K{k}", (poly,), 0.1, 1.0, np.array([0.0, (k + 0.5) * h, 0.0]), np.eye(3), poly)
+
+    def joint(name, a, y):
+        return JointSpec(name, a, a + 1, np.array([-b / 2, y]), np.array([b / 2, y]), np.array([0.0, 1.0]))
+
+    return Model("stack", (block(0), block(1)), (joint("B0", -1, 0.0), joint("J1", 0, h)),
+                 BaseSpec((np.array([[-1.0, -0.1], [1.0, -0.1], [1.0, 0.0], [-1.0, 0.0]]),), 0.4), 2 * h, 1)
+
+
+def _stack_pose(m, angle, slip):
+    """Both blocks rotated by ``angle`` about the base's right corner; block 1 then slid by ``slip``
+    along the rotated joint J1."""
+    R = _rot_about((B / 2, 0.0), angle)
+    p = np.array([B / 2, 0.0, 0.0])
+    c = np.array([b.centroid for b in m.bodies])
+    pos = p + (c - p) @ R.T
+    pos[1] += slip * (R @ [1.0, 0.0, 0.0])
+    return pos, np.array([R, R])
+
+
+@pytest.mark.parametrize("f, j1, mode", [(0.9, "closed", "rocking"), (1.1, "slide", "mixed")])
+def test_hinges_with_a_little_slip_are_mixed_which_the_friction_map_counts_as_sliding(f, j1, mode, S):
+    # a hinge at the base and a slip at J1 just below / above slide_fraction of the window: the
+    # rocking/sliding boundary of the friction map's mu* (mixed counts as sliding there)
+    from dem.experiments.friction_map import ROCKING_MODES, SLIDING_MODES
+
+    m = _stack()
+    w = B * math.sin(0.02)  # the window: the base hinge's opening
+    pos1, R1 = _stack_pose(m, -0.02, f * S.slide_fraction * w)
+    states, md = classify(m, S, *_rest(m), pos1, R1, w)
+    assert [(s.joint, s.state) for s in states] == [("B0", "hinge"), ("J1", j1)]
+    assert md == mode and md in (SLIDING_MODES if f > 1 else ROCKING_MODES)
+
+
+@pytest.mark.parametrize("ratio, mode", [(0.9, "mixed"), (1.1, "sliding")])
+def test_assembly_slides_when_its_summed_slip_reaches_its_summed_opening(ratio, mode, S):
+    m = _stack()
+    opening = B * math.sin(0.02)
+    pos1, R1 = _stack_pose(m, -0.02, ratio * opening)
+    states, md = classify(m, S, *_rest(m), pos1, R1, opening)
+    assert [s.state for s in states] == ["hinge", "slide"] and md == mode
+    assert abs(states[1].slip) == pytest.approx(ratio * opening, rel=1e-9) and abs(states[1].opening) < 1e-12

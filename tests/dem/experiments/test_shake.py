@@ -11,6 +11,7 @@ from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, first_rebound, shake
 from dem.formats.shake import load_shake, save_shake
 from specimens.constants import NO_SLIDING_MU, G
+from specimens.errors import ArchdemInputError
 
 # full base 0.1 m x height 0.4 m (b/h = 0.25); planar, because the analytic model is 2-D and the
 # 3-D block (0.1 m wide) otherwise rocks out of plane too (measured: 45 mm drift along z, then an
@@ -51,29 +52,33 @@ def test_rocking_onset_is_g_b_over_h(block):
     assert not below.collapsed and not above.collapsed
 
 
-@pytest.mark.parametrize("freq", [2.0, 3.0, 5.0])
-def test_overturning_amplitude_matches_rocking_block_model(block, freq):
-    """The DEM overturning amplitude of a plain one-cycle sine lies within 10 % of the analytic
-    rocking-block threshold (docs/physics/dynamics.md#2-the-rocking-block, Housner restitution from the momentum balance).
+# (below, above): relative distances from the analytic threshold at which the DEM must survive and
+# collapse. Measured (scan ratio 1.01, bisection 0.5 %): the DEM collapses from +0.9 % (2 Hz), +0.5 %
+# (3 Hz, 5 Hz) on, so 2 % above everywhere; below it survives down to -10 % at 2 Hz (one lone collapse
+# at -0.1 %), but collapses in islands at -8.7 % to -7.1 % (3 Hz) and -14 % to -3.4 % (5 Hz): impact
+# scatter. At 5 Hz the -10 % run survives between islands: there the 10 % holds only as this point check
+BAND = {2.0: (0.02, 0.02), 3.0: (0.10, 0.02), 5.0: (0.10, 0.02)}
 
-    Measured by full DEM thresholds (scan + bisection to 1 %): 2 Hz 0.3105 g vs 0.3090 g (+0.5 %),
-    3 Hz 0.3536 g vs 0.3602 g (-1.8 %), 5 Hz 0.751 g vs 0.811 g (-7.4 %). Tolerance 10 %: the
-    threshold at these frequencies is decided by the first impact (collapse after the rebound), and
-    the measured energy restitution of the DEM impact is 0.77-0.80 per impact against Housner's 0.83
-    (PyBullet resolves the corner impact with 4 contact points and ERP, not an instantaneous
-    momentum balance) — the scatter expected of impact modelling (docs/validation.md#3-single-block). Checked here by
-    two runs per frequency: 10 % below the analytic threshold survives, 10 % above collapses.
-    """
+
+@pytest.mark.parametrize("freq", sorted(BAND))
+def test_overturning_amplitude_matches_rocking_block_model(block, freq):
+    """The DEM overturning amplitude of a plain one-cycle sine against the analytic rocking-block
+    threshold (docs/physics/dynamics.md#2-the-rocking-block, Housner restitution from the momentum
+    balance), by two runs per frequency: BAND below it survives, BAND above it collapses. The
+    validation's 10 % (docs/validation.md#3-single-block) is the scatter of impact modelling: the
+    DEM impact keeps 0.77-0.80 of the energy against Housner's 0.83 (4 contact points and ERP)."""
     from analytic.domain import failure_domain
     from analytic.rocking_block import RockingBlock
 
     dom = failure_domain(RockingBlock(B / 2, H / 2), "sine0", [freq], a_max_ratio=8.0, n_scan=16, workers=1)
     a_an = dom.columns[0].thresholds[0][0]
+    below, above = BAND[freq]
+    assert max(below, above) <= 0.10  # never wider than the validation rule
     proto = ShakeProtocol(tail=2.0)
-    lo = shake(block, SinePulse(0.90 * a_an, freq), SETTINGS, proto)
-    hi = shake(block, SinePulse(1.10 * a_an, freq), SETTINGS, proto)
-    assert not lo.collapsed, f"{freq} Hz: DEM collapsed 10 % below the analytic threshold {a_an / G:.4f} g"
-    assert hi.collapsed, f"{freq} Hz: DEM survived 10 % above the analytic threshold {a_an / G:.4f} g"
+    lo = shake(block, SinePulse((1 - below) * a_an, freq), SETTINGS, proto)
+    hi = shake(block, SinePulse((1 + above) * a_an, freq), SETTINGS, proto)
+    assert not lo.collapsed, f"{freq} Hz: DEM collapsed {below:.0%} below the analytic threshold {a_an / G:.4f} g"
+    assert hi.collapsed, f"{freq} Hz: DEM survived {above:.0%} above the analytic threshold {a_an / G:.4f} g"
     # collapse is overturning: the block ends up rotated past its slenderness angle
     assert _max_rotation(hi) > math.atan(B / H)
 
@@ -100,8 +105,9 @@ def test_run_file_roundtrip(block, tmp_path):
     # the stored input is the motion sampled at the simulator step: its peak is the amplitude
     assert np.abs(d["input_a"]).max() == pytest.approx(0.5 * G, rel=1e-4)
     assert d["sim"].history.pos.shape == res.sim.history.pos.shape
-    with pytest.raises(Exception):
-        save_shake(res, p)  # never overwritten
+    with pytest.raises(ArchdemInputError, match="exists; an existing result is never overwritten"):
+        save_shake(res, p)
+    assert load_shake(p)["summary"] == s  # the file is untouched
 
 
 def test_skipping_the_friction_readout_leaves_the_run_unchanged(block):
@@ -115,14 +121,17 @@ def test_skipping_the_friction_readout_leaves_the_run_unchanged(block):
     np.testing.assert_array_equal(a.sim.history.pos, b.sim.history.pos)
 
 
-@pytest.mark.parametrize("amp_g, freq", [(0.2, 4.0), (0.32, 3.0)])
+@pytest.mark.parametrize("amp_g, freq", [
+    pytest.param(0.2, 4.0, id="below-onset"),  # below the rocking onset g b/h = 0.25 g: it survives
+    # regression pin: that 0.32 g at 3 Hz survives is this code's own earlier output, not physics
+    # (the analytic threshold is 0.3602 g, but the DEM collapses in an island from 0.3287 g, BAND)
+    pytest.param(0.32, 3.0, id="regression-pin-rocks-and-survives"),
+])
 def test_a_run_ends_once_at_rest_after_the_motion(block, amp_g, freq):
     """The end-at-rest rule (ShakeProtocol.rest_after) only cuts a survived run short: the run is
     the same step for step up to the end, with the same outcome and residual displacement as the
-    whole duration simulated. 0.2 g is below the rocking onset g b/h = 0.25 g; at 0.32 g, 3 Hz
-    (10 % below the overturning amplitude 0.354 g, see above) the block rocks and survives: it
-    rocks until about 2.7 s (swings of 31 mm at the top corner, each apex at rest for an instant:
-    the rule looks at 0.1 s), then stands."""
+    whole duration simulated. At 0.32 g, 3 Hz the block rocks until about 2.7 s (swings of 31 mm
+    at the top corner, each apex at rest for an instant: the rule looks at 0.1 s), then stands."""
     proto = ShakeProtocol(tail=4.0)
     cut = shake(block, SinePulse(amp_g * G, freq), SETTINGS, proto)
     whole = shake(block, SinePulse(amp_g * G, freq), SETTINGS, ShakeProtocol(tail=4.0, rest_after=None))
@@ -138,8 +147,6 @@ def test_a_run_ends_once_at_rest_after_the_motion(block, amp_g, freq):
 
 
 def test_bad_rest_rule_is_an_input_error():
-    from specimens.errors import ArchdemInputError
-
     for kw in ({"rest_after": -0.1}, {"rest_window": 0.0}, {"rest_span": float("nan")}):
         with pytest.raises(ArchdemInputError, match="rest"):
             ShakeProtocol(**kw)

@@ -134,9 +134,9 @@ def test_block_threshold_scan_and_bisection():
 @pytest.mark.slow
 def test_arch_threshold_no_sliding_2hz_above_static_onset():
     """Sh02-Sd020, glued, friction high enough to prevent sliding, 2 Hz: the DEM least collapsing
-    amplitude is at least the static onset lambda g of the LP (below it nothing moves), and the
-    ratio to the four-bar threshold (minimised layout, plain sine) is reported (the reference study
-    found the four-bar conservative, i.e. ratio >= 1; not asserted: not a physical requirement)."""
+    amplitude is at least the static onset lambda g of the LP (below it nothing moves), and within
+    the scatter of impact modelling of the four-bar threshold (minimised layout, plain sine). The
+    reference study found the four-bar conservative (DEM / four-bar >= 1); here it is not (0.935)."""
     from analytic import linkage
     from analytic.domain import failure_domain
     from analytic.limit_discrete import solve_lp
@@ -155,6 +155,9 @@ def test_arch_threshold_no_sliding_2hz_above_static_onset():
     # 1 % below: hold tilt thresholds lie at most 2.8 % below the LP (docs/validation.md#4-no-sliding-tilt-against-the-lp), not more
     assert r.amplitude_g >= lam * (1 - 0.01)
     fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch), direction=1)
-    a_fb = failure_domain(fb, "sine0", [2.0], a_max_ratio=10, n_scan=24, workers=1).columns[0].thresholds[0][0] / G
-    print(f"\nSh02-Sd020 2 Hz no sliding: DEM {r.amplitude_g:.4f} g, four-bar {a_fb:.4f} g, "
-          f"ratio DEM/four-bar {r.amplitude_g / a_fb:.3f}, static lambda {lam:.4f}")
+    a_fb, mode = failure_domain(fb, "sine0", [2.0], a_max_ratio=10, n_scan=24, workers=1).columns[0].thresholds[0]
+    # the four-bar collapses after its first impact, where the DEM's impact (contact points, error
+    # reduction) and the momentum balance differ: the single block's 10 % applies (test_shake.py,
+    # docs/validation.md#3-single-block). Measured: DEM 0.3973 g, four-bar 0.4251 g (-6.5 %)
+    assert mode == "after-impact"
+    assert r.amplitude_g == pytest.approx(a_fb / G, rel=0.10)

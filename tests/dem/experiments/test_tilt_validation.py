@@ -40,6 +40,16 @@ def test_no_sliding_lambda_matches_lp(case):
 
 
 @pytest.mark.slow
+def test_no_sliding_lambda_of_this_specimen(case):
+    # this case's own reading beside the 3 % rule: measured +0.05 % (0.35133 against 0.35115).
+    # 1 %: thresholds near the bracket are reproducible to +-1 % (twice the 0.5 % bisection bracket;
+    # docs/validation.md#7-non-monotonic-outcomes-near-the-threshold); a regression moves it further
+    asm, m, ns = case
+    lp = lim.solve_lp(asm, float("inf"), float("inf"))
+    assert ns.lam == pytest.approx(lp.lam, rel=0.01)
+
+
+@pytest.mark.slow
 def test_no_sliding_hinges_match_lp(case):
     asm, m, ns = case
     lp = lim.solve_lp(asm, float("inf"), float("inf"))

@@ -7,6 +7,11 @@ function called directly in this process.
 """
 from __future__ import annotations
 
+import os
+import signal
+import socket
+import threading
+import time
 from collections import Counter
 from pathlib import Path
 
@@ -18,6 +23,18 @@ from dem.studies.sweep import StudyInterrupted, case_key, load_study, run_study
 from specimens.errors import ArchdemInputError
 
 FUNC = "dem.studies.selftest_cases:evaluate"
+NO_DASK = "the cluster extra is not installed (pip install -e '.[cluster]')"
+
+
+def kill_or_evaluate(case: dict) -> dict:
+    """Stand-in case: ``die`` kills the process running it (SIGKILL, as the OOM killer does), every
+    time; any other case is ``evaluate``'s. Dask workers import it by name, as pytest imported it."""
+    if case.get("die"):
+        os.kill(os.getpid(), signal.SIGKILL)
+    return evaluate(case)
+
+
+KILL_FUNC = f"{__name__}:kill_or_evaluate"
 
 
 def _cases(n, count_dir=None, **extra):
@@ -106,7 +123,7 @@ def test_resume_subset_then_full_evaluates_each_case_once(tmp_path):
     p = tmp_path / "s.h5"
     run_study(cases[:4], FUNC, p, workers=2, progress=False)
     res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
-    assert all(r.ok for r in res) and len(res) == 10
+    assert [r.status for r in res] == ["ok"] * 10
     assert _counts(counts) == Counter(range(10))  # every case exactly once over both runs
 
 
@@ -121,7 +138,7 @@ def test_resume_retries_failed_cases_only(tmp_path):
     first = run_study(cases, FUNC, p, workers=2, progress=False)
     assert [r.status for r in first].count("failed") == 1 and not first[3].ok
     second = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
-    assert all(r.ok for r in second)
+    assert [r.status for r in second] == ["ok"] * len(cases)
     assert _counts(counts) == Counter({0: 1, 1: 1, 2: 1, 3: 2, 4: 1, 5: 1})
 
 
@@ -140,7 +157,7 @@ def test_crashed_worker_loses_and_repeats_nothing_finished(tmp_path):
     assert 1 <= len(stored_first) < 10  # a real interruption: some stored, some not
     after_first = _counts(counts)
     res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
-    assert all(r.ok for r in res)
+    assert [r.status for r in res] == ["ok"] * len(cases)
     total = _counts(counts)
     for i, c in enumerate(cases):
         if case_key(c) in stored_first:
@@ -167,14 +184,14 @@ def test_keyboard_interrupt_keeps_finished_cases(tmp_path):
     assert {case_key(c) for c in cases[:3]} <= stored_first and case_key(cases[3]) not in stored_first
     after_first = _counts(counts)
     res = run_study(cases, FUNC, p, workers=1, resume=True, progress=False)
-    assert all(r.ok for r in res)
+    assert [r.status for r in res] == ["ok"] * len(cases)
     total = _counts(counts)
     for i, c in enumerate(cases):
         assert total[i] == after_first[i] + (case_key(c) not in stored_first)
 
 
 def test_dask_local_cluster_gives_same_results_as_local_pool(tmp_path):
-    distributed = pytest.importorskip("distributed", reason="the cluster extra is not installed (pip install -e '.[cluster]')")
+    distributed = pytest.importorskip("distributed", reason=NO_DASK)
     cases = _cases(6)
     cases[4]["fail"] = True
     local = run_study(cases, FUNC, tmp_path / "local.h5", workers=2, progress=False)
@@ -200,5 +217,73 @@ def test_case_interrupted_while_written_counts_as_not_stored(tmp_path):
         del f["cases"][case_key(cases[1])].attrs["status"]
     assert case_key(cases[1]) not in load_study(p).by_key
     res = run_study(cases, FUNC, p, workers=2, resume=True)
-    assert all(r.ok for r in res)
+    assert [r.status for r in res] == ["ok"] * len(cases)
     assert _counts(counts) == Counter({0: 1, 1: 2, 2: 1, 3: 1})
+
+
+def test_dask_killed_worker_recorded_as_failed_others_complete(tmp_path):
+    distributed = pytest.importorskip("distributed", reason=NO_DASK)
+    marker = tmp_path / "crash-once"
+    marker.touch()
+    cases = _cases(5)
+    cases[0]["crash_marker"] = str(marker)  # kills the first worker to run it (os._exit): Dask retries it
+    cases[4]["die"] = True  # kills every worker that runs it: Dask gives up (KilledWorker)
+    # Dask counts a death against every case running or queued on the dying worker: the killer is
+    # submitted last, so that the others have run before it (default Dask settings: 4 deaths)
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                  dashboard_address=None) as cluster:
+        res = run_study(cases, KILL_FUNC, tmp_path / "s.h5", scheduler=cluster.scheduler_address, progress=False)
+    assert [r.status for r in res] == ["ok", "ok", "ok", "ok", "failed"]
+    assert res[4].error.startswith("worker died while running this case (dask KilledWorker")
+    assert res[4].results == {} and load_study(tmp_path / "s.h5").by_key[res[4].key].status == "failed"
+    assert not marker.exists()  # case 0 did kill a worker before it succeeded
+    for r, c in zip(res, cases):
+        if r.ok:
+            _assert_same(r.results, evaluate(c))
+
+
+def _refusing_address() -> tuple[socket.socket, str]:
+    """A local TCP port bound but never listening: connecting is refused, and while the socket is
+    open no other process can take the port (a port merely found free may be reused at once)."""
+    s = socket.socket()
+    s.bind(("127.0.0.1", 0))
+    return s, f"tcp://127.0.0.1:{s.getsockname()[1]}"
+
+
+def test_dask_unreachable_scheduler_is_an_input_error_and_leaves_no_file(tmp_path):
+    pytest.importorskip("distributed", reason=NO_DASK)
+    sock, address = _refusing_address()
+    with sock, pytest.raises(ArchdemInputError) as exc:
+        run_study(_cases(2), FUNC, tmp_path / "s.h5", scheduler=address, progress=False)
+    msg = str(exc.value)
+    assert msg.startswith(f"cannot connect to the Dask scheduler {address}: ") and "\n" not in msg
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("address", ["garbage", "tcp://", "tcp://host", "udp://127.0.0.1:8786", "tcp://h:notaport"])
+def test_malformed_scheduler_address_is_an_input_error(tmp_path, address):
+    with pytest.raises(ArchdemInputError, match="tcp://HOST:PORT"):
+        run_study(_cases(1), FUNC, tmp_path / "s.h5", scheduler=address, progress=False)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_dask_unreachable_scheduler_fails_quickly(tmp_path):
+    pytest.importorskip("distributed", reason=NO_DASK)
+    sock, address = _refusing_address()
+    caught: list[BaseException] = []
+
+    def call():
+        try:
+            run_study(_cases(1), FUNC, tmp_path / "s.h5", scheduler=address, progress=False)
+        except BaseException as exc:  # noqa: BLE001 - examined in the test's thread
+            caught.append(exc)
+        finally:
+            sock.close()
+
+    # in a daemon thread, so that a regression to Dask's own 20 s retry costs the test 3 s, not 20
+    t0 = time.perf_counter()
+    th = threading.Thread(target=call, daemon=True)
+    th.start()
+    th.join(3.0)
+    assert not th.is_alive(), f"no answer {time.perf_counter() - t0:.1f} s after connecting to {address}"
+    assert len(caught) == 1 and isinstance(caught[0], ArchdemInputError)

@@ -51,7 +51,9 @@ def test_block_slides_at_mu(engine):
 def test_block_rocks_at_b_over_h(engine):
     # mu > b/h: the block overturns about its downhill (+x, "extrados") corner at lambda = b/h
     r = tilt(single_block(B, H), Settings(engine=engine, mu_joint=1.0, mu_base=1.0), TiltProtocol())
-    assert r.lam == pytest.approx(B / H, rel=0.02)
+    assert r.lam == pytest.approx(B / H, rel=0.02)  # the validation rule (docs/validation.md#1-how-to-reproduce)
+    # this case: measured +0.20 % with both engines; 1 % = twice the bisection's 0.5 % bracket
+    assert r.lam == pytest.approx(B / H, rel=0.01)
     assert r.mode == "rocking"
     assert (r.joints[0].state, r.joints[0].face) == ("hinge", "extrados")
 
