@@ -1,4 +1,5 @@
-"""File basics shared by every layer: atomic result files, output paths, one JSON encoder.
+"""File basics shared by every layer: atomic result files, output paths, one JSON encoder, the
+parser of value grids.
 
 A result is written to a temporary name beside the target and then renamed: an interrupted
 write leaves no half-written file under the final name, and an existing result is never
@@ -8,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import tempfile
 from pathlib import Path
@@ -95,3 +97,32 @@ def json_default(o: Any) -> Any:
 def to_json(obj: Any, **kw) -> str:
     """``json.dumps`` with :func:`json_default`."""
     return json.dumps(obj, default=json_default, **kw)
+
+
+#: Most values a grid option may hold (a typo such as 1:1e9:1e-9 would otherwise exhaust memory).
+MAX_GRID_POINTS = 1000
+
+
+def parse_grid(text: str, what: str = "grid") -> list[float]:
+    """``"0.5,1,2"`` or an inclusive range ``"start:stop:step"``: positive values, at most
+    ``MAX_GRID_POINTS``; an empty text or an empty item is refused."""
+    try:
+        if ":" in text:
+            a, b, s = (float(v) for v in text.split(":"))
+        else:
+            items = text.split(",")
+            if any(not v.strip() for v in items):
+                raise ValueError
+            vals = [float(v) for v in items]
+    except ValueError:
+        raise ArchdemInputError(f"{what}: expected a list '0.5,1,2' or a range 'start:stop:step', got {text!r}") from None
+    if ":" in text:
+        if not (all(math.isfinite(v) for v in (a, b, s)) and s > 0 and b >= a):
+            raise ArchdemInputError(f"{what}: a range start:stop:step needs start <= stop and step > 0, got {text!r}")
+        n = int(math.floor((b - a) / s + 1e-9)) + 1
+        vals = [a + k * s for k in range(min(n, MAX_GRID_POINTS + 1))]
+    if len(vals) > MAX_GRID_POINTS:
+        raise ArchdemInputError(f"{what}: {text!r} holds more than {MAX_GRID_POINTS} values")
+    if not vals or not all(math.isfinite(v) and v > 0 for v in vals):
+        raise ArchdemInputError(f"{what}: values must be positive, got {text!r}")
+    return vals

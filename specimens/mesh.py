@@ -13,6 +13,7 @@ import numpy as np
 import trimesh
 
 from specimens.blocks import Assembly, Body
+from specimens.errors import ArchdemInputError
 from specimens.sections import is_convex
 
 MeshFormat = Literal["stl", "obj", "glb"]
@@ -69,16 +70,20 @@ def export_meshes(assembly: Assembly, out_dir: str | Path, fmt: MeshFormat = "st
             for k, m in enumerate(pieces):
                 scene.add_geometry(m, node_name=f"{body.name}_p{k}", geom_name=f"{body.name}_p{k}")
         target = out / "assembly.glb"
-        with atomic_path(target, overwrite=True) as tmp:
+        with atomic_path(target) as tmp:
             tmp.write_bytes(scene.export(file_type="glb"))
         return [target]
     if fmt not in ("stl", "obj"):
         raise ValueError(f"unknown mesh format {fmt!r}")
+    targets = [out / f"{body.name}_p{k}.{fmt}" for body, pieces in zip(assembly.bodies, meshes) for k in range(len(pieces))]
+    clash = [t for t in targets if t.exists()]
+    if clash:  # refused before anything is written: never a folder of mixed old and new meshes
+        raise ArchdemInputError(f"{out} holds meshes already ({clash[0].name}, ...); choose another folder")
     for body, pieces in zip(assembly.bodies, meshes):
         for k, m in enumerate(pieces):
             target = out / f"{body.name}_p{k}.{fmt}"
             data = m.export(file_type=fmt)
-            with atomic_path(target, overwrite=True) as tmp:
+            with atomic_path(target) as tmp:
                 if isinstance(data, str):
                     tmp.write_text(data)
                 else:

@@ -5,28 +5,28 @@ import argparse
 import time
 from pathlib import Path
 
-from dem.cli.common import add_engine_argument, contact_option, default_of, writable_dir
+from dem.cli.common import add_engine_argument, contact_option, default_of, workers_option, writable_dir
 
 
 def _campaign(args: argparse.Namespace) -> int:
     from dem.campaign.context import CampaignContext
     from dem.campaign.runner import all_steps, run_campaign
     from specimens.catalogue import select_specimens
+    from specimens.errors import ArchdemInputError
 
     specs = select_specimens(args.specimens)
+    steps = None
+    if args.steps is not None:  # checked before the output folder is made
+        steps = [s.strip() for s in args.steps.split(",")]
+        if not all(steps):
+            raise ArchdemInputError(f"--steps: give step names separated by commas, got {args.steps!r}")
+        unknown = [s for s in steps if s not in all_steps()]
+        if unknown:
+            raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(all_steps())}")
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
                           quick=args.quick, workers=args.workers, contact=args.contact)
     t0 = time.perf_counter()
-    steps = None
-    if args.steps:
-        steps = [s.strip() for s in args.steps.split(",")]
-        STEPS = all_steps()
-        unknown = [s for s in steps if s not in STEPS]
-        if unknown:
-            from specimens.errors import ArchdemInputError
-
-            raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(STEPS)}")
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
 
     steps_run = steps or list(all_steps())
@@ -66,7 +66,7 @@ def register(sub) -> None:
                         f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
     add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
-    p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.add_argument("--steps", default=None, help="comma-separated subset of steps")
     p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")
     p.set_defaults(func=_campaign)

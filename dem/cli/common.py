@@ -12,6 +12,10 @@ from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, 
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
 from specimens.io import json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.io import parse_grid as _parse_grid
+
+#: Largest length an arch option takes [m] (a typo such as --Rc 1e30 is refused, not simulated).
+MAX_LENGTH_M = 1000.0
 
 
 def default_of(obj: Any, name: str) -> Any:
@@ -37,7 +41,7 @@ def default_of(obj: Any, name: str) -> Any:
 def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) -> None:
     """Arch by catalogue id (positional) or by parameters."""
     p.add_argument("id", nargs=None if id_required else "?", help="specimen id (see `archdem specimens`)")
-    g = p.add_argument_group("arch by parameters (instead of an id; SI units, m)")
+    g = p.add_argument_group(f"arch by parameters (instead of an id; SI units, m; lengths up to {MAX_LENGTH_M:g} m)")
     for name in ("Ri", "Re", "e", "Sh", "Sd", "Rc"):
         g.add_argument(f"--{name}", type=float, default=None)
     g.add_argument("--width", type=float, default=None,
@@ -56,6 +60,10 @@ def arch_from_args(args: argparse.Namespace):
     from specimens.catalogue import get_specimen
     from specimens.geometry import PointedArch
 
+    for name in ("Ri", "Re", "e", "Rc", "width"):
+        v = getattr(args, name, None)
+        if v is not None and not (math.isfinite(v) and abs(v) <= MAX_LENGTH_M):
+            raise ArchdemInputError(f"--{name} must be a length of at most {MAX_LENGTH_M:g} m, got {v:g}")
     width = args.width if args.width is not None else SPECIMEN_WIDTH
     by_radii = [args.Ri, args.Re, args.e]
     by_ratio = [args.Sh, args.Sd, args.Rc]
@@ -73,6 +81,17 @@ def arch_from_args(args: argparse.Namespace):
         raise ArchdemInputError("give a specimen id, or all of --Ri --Re --e, or all of --Sh --Sd --Rc")
     label = f"Sh{arch.Sh:.3g}-Sd{arch.Sd:.3g}-Rc{arch.Rc:.3g}"
     return label, arch
+
+
+def workers_option(text: str) -> int:
+    """``--workers``: a whole number of processes >= 1 (the same rule on every command)."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a whole number of processes >= 1, got {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number of processes >= 1, got {text!r}")
+    return n
 
 
 def contact_option(text: str) -> float | str:
@@ -115,6 +134,22 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
     return kw
 
 
+#: Figure formats the commands write (matplotlib's, by the file's suffix).
+FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
+
+
+def figure_file(path: str, option: str = "--plot"):
+    """A new figure file: a known suffix, not an existing file or folder; checked before any run."""
+    from pathlib import Path
+
+    p = Path(path)
+    if p.suffix.lower() not in FIGURE_SUFFIXES:
+        raise ArchdemInputError(f"{option} must end in {', '.join(FIGURE_SUFFIXES)}, got {p.name!r}")
+    if p.is_dir():
+        raise ArchdemInputError(f"{option} {p} is a folder; give a file name")
+    return writable_file(p, overwrite=False)
+
+
 def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
 
@@ -129,18 +164,5 @@ def add_engine_argument(p: argparse.ArgumentParser) -> None:
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:
-    """``"0.5,1,2"`` or an inclusive range ``"start:stop:step"``."""
-    try:
-        if ":" in text:
-            a, b, s = (float(v) for v in text.split(":"))
-            if not (s > 0 and b >= a):
-                raise ValueError
-            n = int(math.floor((b - a) / s + 1e-9)) + 1
-            vals = [a + k * s for k in range(n)]
-        else:
-            vals = [float(v) for v in text.split(",") if v.strip()]
-    except ValueError:
-        raise ArchdemInputError(f"{what}: expected a list '0.5,1,2' or a range 'start:stop:step', got {text!r}") from None
-    if not vals or not all(math.isfinite(v) and v > 0 for v in vals):
-        raise ArchdemInputError(f"{what}: values must be positive, got {text!r}")
-    return vals
+    """A grid option: :func:`specimens.io.parse_grid` (one parser for every command)."""
+    return _parse_grid(text, what)

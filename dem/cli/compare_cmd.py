@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import default_of, print_json, writable_file
+from dem.cli.common import default_of, print_json, workers_option, writable_file
 from specimens.errors import ArchdemInputError
 
 
@@ -60,7 +60,7 @@ def register(sub) -> None:
                         f"{'/'.join(f'{m:g}' for m in FRICTIONS['reference'])}, or both (default)")
     p.add_argument("--dt", type=float, default=None,
                    help=f"time step [s] for both engines (default {default_of(Settings, 'dt'):g})")
-    p.add_argument("--workers", type=int, default=1, help="processes (default 1)")
+    p.add_argument("--workers", type=workers_option, default=1, help="processes (default 1)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")
     p.set_defaults(func=_run)

@@ -28,7 +28,7 @@ def dem_domain(args: argparse.Namespace) -> int:
     from dem.campaign.step_shake import SHAKE_FREQS
     from specimens.blocks import DEFAULT_DENSITY
 
-    freqs = parse_grid(args.freq) if args.freq else list(SHAKE_FREQS)
+    freqs = parse_grid(args.freq) if args.freq is not None else list(SHAKE_FREQS)
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, arch = arch_from_args(args)

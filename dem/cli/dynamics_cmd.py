@@ -11,11 +11,13 @@ from dem.cli.common import (
     parse_grid,
     print_json,
     resolve_contact,
+    workers_option,
     writable_file,
 )
 from specimens.blocks import DEFAULT_DENSITY
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
+from specimens.io import MAX_GRID_POINTS
 
 # Default grids of ``archdem domain`` (the analytic failure_domain takes its grid from the caller)
 SINE_FREQS = "1:20:0.5"  # Hz
@@ -108,7 +110,10 @@ def _run_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("pulses A/B take --durations, not --freq")
     if not pulses and args.durations is not None:
         raise ArchdemInputError("sine inputs take --freq, not --durations")
-    xs = parse_grid(args.durations or PULSE_DURATIONS, "--durations") if pulses else parse_grid(args.freq or SINE_FREQS)
+    if not (math.isfinite(args.tol) and 0 < args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in (0, 0.5], got {args.tol}")
+    xs = (parse_grid(PULSE_DURATIONS if args.durations is None else args.durations, "--durations") if pulses
+          else parse_grid(SINE_FREQS if args.freq is None else args.freq))
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, mech = build_mechanism(args)
@@ -151,12 +156,14 @@ def _run_rock(args: argparse.Namespace) -> int:
         label, mech = build_mechanism(args)
         what = f"record {motion.name or args.record} x {args.scale:g}"
     else:
-        if args.amplitude is None or not (args.amplitude > 0):
-            raise ArchdemInputError("--amplitude (in g) must be a positive number")
+        if args.amplitude is None or not (math.isfinite(args.amplitude) and args.amplitude > 0):
+            raise ArchdemInputError(f"--amplitude (in g) must be a positive number, got {args.amplitude}")
         pulses = args.input in ("A", "B")
         x = args.duration if pulses else args.freq
-        if x is None or not (x > 0):
+        if x is None:
             raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
+        if not (math.isfinite(x) and x > 0):
+            raise ArchdemInputError(f"{'--duration' if pulses else '--freq'} must be a positive number, got {x:g}")
         if args.plot:
             writable_file(args.plot, overwrite=False)
         label, mech = build_mechanism(args)
@@ -191,7 +198,7 @@ def register(sub) -> None:
                        description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
                                    "duration (pulses), all collapse/survival bands.")
     _add_common(p)
-    p.add_argument("--freq", default=None, help="frequencies [Hz]: '0.5,1,2' or 'start:stop:step' (default "
+    p.add_argument("--freq", default=None, help=f"frequencies [Hz]: '0.5,1,2' or 'start:stop:step', at most {MAX_GRID_POINTS} (default "
                    f"{SINE_FREQS}; --engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})")
     p.add_argument("--durations", default=None, help=f"pulse durations t_i [s] (default {PULSE_DURATIONS})")
     p.add_argument("--amax", type=float, default=default_of(failure_domain, "a_max_ratio"),
@@ -201,7 +208,7 @@ def register(sub) -> None:
                    help=f"amplitudes in the scan (default {default_of(failure_domain, 'n_scan')})")
     p.add_argument("--tol", type=float, default=default_of(failure_domain, "tol"),
                    help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
-    p.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
                    help="DEM: discrete configuration")

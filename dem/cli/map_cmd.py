@@ -5,7 +5,15 @@ import argparse
 import math
 import sys
 
-from dem.cli.common import add_engine_argument, contact_option, default_of, print_json, resolve_contact, writable_dir
+from dem.cli.common import (
+    add_engine_argument,
+    contact_option,
+    default_of,
+    print_json,
+    resolve_contact,
+    workers_option,
+    writable_dir,
+)
 from specimens.errors import ArchdemInputError
 
 
@@ -107,7 +115,7 @@ def register(sub) -> None:
                    help=f"bisection steps on mu* after the grid (default {default_of(catalogue_map, 'refine')})")
     p.add_argument("--tol", type=float, default=MAP_TILT_TOL,
                    help=f"relative lambda tolerance of each tilt (default {MAP_TILT_TOL:g})")
-    p.add_argument("--workers", type=int, default=None, help="local worker processes (default: all cores)")
+    p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")
     add_engine_argument(p)
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
     p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")

@@ -11,9 +11,10 @@ from dem.cli.common import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
+    figure_file,
     print_json,
+    workers_option,
     writable_dir,
-    writable_file,
 )
 from specimens.errors import ArchdemInputError
 
@@ -41,9 +42,23 @@ def _model_and_settings(args: argparse.Namespace):
     return label, arch, asm, from_assembly(asm, name=label), Settings(**kw)
 
 
+#: Bounds of a sine pulse on the command line: beyond them a run answers nothing physical.
+MAX_SINE_HZ = 100.0  # at dt 0.5 ms, 20 steps per cycle
+MAX_AMPLITUDE_G = 100.0
+
+
+def _sine(args: argparse.Namespace) -> None:
+    if args.sine is not None and not (math.isfinite(args.sine) and 0 < args.sine <= MAX_SINE_HZ):
+        raise ArchdemInputError(f"--sine must be a frequency in (0, {MAX_SINE_HZ:g}] Hz, got {args.sine:g}")
+    a = getattr(args, "amplitude", None)
+    if a is not None and not (math.isfinite(a) and 0 < a <= MAX_AMPLITUDE_G):
+        raise ArchdemInputError(f"--amplitude must be in (0, {MAX_AMPLITUDE_G:g}] g, got {a:g}")
+
+
 def _motion(args: argparse.Namespace):
     from analytic.records import ground_motion
 
+    _sine(args)
     return ground_motion(sine=args.sine, amplitude=args.amplitude, record=args.record, units=args.units,
                          baseline=args.baseline, scale=args.scale, pga=args.pga)
 
@@ -57,9 +72,9 @@ def _run_shake(args: argparse.Namespace) -> int:
     label, _, _, model, settings = _model_and_settings(args)
     proto = ShakeProtocol(tail=args.tail, duration=args.duration, stop_on_collapse=not args.full, load=args.load,
                           **({"rest_after": None} if args.full else {}))
-    out = writable_dir(args.out)
     if args.plot:
-        writable_file(args.plot, overwrite=False)
+        figure_file(args.plot)
+    out = writable_dir(args.out)
     res = shake(model, motion, settings, proto, label=label)
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
     path = save_shake(res, unique_run_path(out, stem))
@@ -85,11 +100,13 @@ def _run_threshold(args: argparse.Namespace) -> int:
     from dem.experiments.thresholds import static_onset, threshold
 
     _positive("--sine", args.sine)
+    _sine(args)
     label, arch, _, model, settings = _model_and_settings(args)
     lam = static_onset(model, settings)
     _positive("--a-min", args.a_min)
     _positive("--a-max", args.a_max)
-    _positive("--tol", args.tol)
+    if not (math.isfinite(args.tol) and 0 < args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in (0, 0.5], got {args.tol}")
     res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
                     a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
     a_max = res.a_range_g[1]
@@ -118,7 +135,7 @@ def _run_animate(args: argparse.Namespace) -> int:
 
 def _common(p: argparse.ArgumentParser) -> None:
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol
+    from dem.experiments.shake import MAX_SIMULATED_S, ShakeProtocol
     from specimens.blocks import discretise
 
     add_arch_arguments(p)
@@ -131,7 +148,8 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
     p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),
-                   help=f"zero-acceleration tail after the motion [s] (default {default_of(ShakeProtocol, 'tail'):g})")
+                   help=f"zero-acceleration tail after the motion [s], up to {MAX_SIMULATED_S:g} "
+                        f"(default {default_of(ShakeProtocol, 'tail'):g})")
     p.add_argument("--load", choices=("inertial", "driven-base"), default=default_of(ShakeProtocol, "load"),
                    help="ground motion as a uniform inertial field on a fixed base (inertial) or as a moving base "
                         f"(driven-base); default {default_of(ShakeProtocol, 'load')}")
@@ -145,8 +163,9 @@ def register(sub) -> None:
     p = sub.add_parser("shake", help="virtual shake table: one sine pulse or recorded accelerogram",
                        description="One shake-table run (uniform inertial field on a fixed base, or --load driven-base).")
     _common(p)
-    p.add_argument("--sine", type=float, default=None, metavar="FREQ", help="one-cycle sine pulse of FREQ [Hz]")
-    p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help="sine amplitude [g]")
+    p.add_argument("--sine", type=float, default=None, metavar="FREQ",
+                   help=f"one-cycle sine pulse of FREQ [Hz], up to {MAX_SINE_HZ:g}")
+    p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help=f"sine amplitude [g], up to {MAX_AMPLITUDE_G:g}")
     p.add_argument("--record", default=None, metavar="FILE", help="accelerogram (.AT2, .smc, ESM ASCII, CSV)")
     p.add_argument("--units", default=None, help="record units if the file does not say (g, m/s2, cm/s2, mm/s2)")
     p.add_argument("--scale", type=float, default=None, help="record scale factor")
@@ -163,14 +182,14 @@ def register(sub) -> None:
                        description="Least collapsing amplitude of a one-cycle sine: amplitude scan, bisection of "
                                    "the lowest collapsing bracket, and every survival band above it.")
     _common(q)
-    q.add_argument("--sine", type=float, required=True, metavar="FREQ", help="sine frequency [Hz]")
+    q.add_argument("--sine", type=float, required=True, metavar="FREQ", help=f"sine frequency [Hz], up to {MAX_SINE_HZ:g}")
     q.add_argument("--a-min", dest="a_min", type=float, default=None, help="scan start [g] (default: static lambda)")
     q.add_argument("--a-max", dest="a_max", type=float, default=None, help=f"scan end [g] (default {SCAN_TOP:g} x start)")
     q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=default_of(threshold, "scan_ratio"),
                    help=f"scan step ratio (default {default_of(threshold, 'scan_ratio'):g})")
     q.add_argument("--tol", type=float, default=default_of(threshold, "tol"),
                    help=f"relative bisection tolerance (default {default_of(threshold, 'tol'):g})")
-    q.add_argument("--workers", type=int, default=None, help="processes for the scan (default: all cores)")
+    q.add_argument("--workers", type=workers_option, default=None, help="processes for the scan (default: all cores)")
     q.set_defaults(func=_run_threshold)
 
     r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")

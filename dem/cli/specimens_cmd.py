@@ -8,12 +8,11 @@ from dem.cli.common import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
+    figure_file,
     print_json,
     writable_dir,
-    writable_file,
 )
 from specimens.catalogue import JSON_KEYS, catalogue_rows
-from specimens.errors import ArchdemInputError
 
 
 def _specimens(args: argparse.Namespace) -> int:
@@ -54,9 +53,7 @@ def _draw(args: argparse.Namespace) -> int:
     from specimens.drawing import save_drawing
 
     label, asm = _assembly(args)
-    out = writable_file(args.out)
-    if out.suffix.lower() not in (".png", ".pdf", ".svg"):
-        raise ArchdemInputError(f"--out must end in .png, .pdf or .svg, got {out.name!r}")
+    out = figure_file(args.out, "--out")
     a = asm.arch
     save_drawing(asm, out, title=f"{label}   Sh = {a.Sh:.2f}, Sd = {a.Sd:.2f}")
     print(f"drawing written to {out}")

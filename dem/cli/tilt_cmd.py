@@ -10,10 +10,11 @@ from dem.cli.common import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
+    figure_file,
     print_json,
     resolve_contact,
+    workers_option,
     writable_dir,
-    writable_file,
 )
 from specimens.errors import ArchdemInputError
 
@@ -35,16 +36,16 @@ def _run(args: argparse.Namespace) -> int:
             raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
     if args.ensemble is not None:
         return _run_ensemble(args, label, arch)
-    if args.seed is not None or args.scatter is not None:
-        raise ArchdemInputError("--seed and --scatter go with --ensemble N")
+    if args.seed is not None or args.scatter is not None or args.workers is not None:
+        raise ArchdemInputError("--seed, --scatter and --workers go with --ensemble N")
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
     if args.dt is not None:
         kw["dt"] = args.dt
     settings = Settings(**kw)
-    out = writable_dir(args.out)
     if args.plot:
-        writable_file(args.plot)
+        figure_file(args.plot)
+    out = writable_dir(args.out)
     res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start,
                                                                **({"rest_after": None} if args.full_hold else {})),
                label=label, assembly=asm)
@@ -87,8 +88,6 @@ def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
                                 "or --contact calibrated (the calibrated scatter)")
     if not (math.isfinite(scatter_mm) and 0 <= scatter_mm <= 1e3 * arch.t / 2):
         raise ArchdemInputError(f"--scatter must be between 0 and half the ring thickness [mm], got {scatter_mm:g}")
-    if args.workers is not None and args.workers < 1:
-        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
     imp = Imperfection(edge_loss=(1.0 - contact) * arch.t / 2, edge_loss_sd=scatter_mm / 1e3)
     out = writable_dir(args.out)
     path = unique_run_path(out, f"ensemble-{label}-{args.config}-seed{args.seed}")
@@ -141,5 +140,5 @@ def register(sub) -> None:
     g.add_argument("--scatter", type=float, default=None, metavar="MM",
                    help="standard deviation of each joint edge's contact loss [mm] (default with --contact "
                         "calibrated: the calibrated scatter)")
-    g.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
+    g.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.set_defaults(func=_run)

@@ -64,6 +64,7 @@ from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact
 from specimens.constants import REFERENCE_MU_BASE
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.io import parse_grid
 
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)
@@ -74,26 +75,9 @@ STUDY_KIND = "friction_map"
 
 # ----------------------------------------------------------------------------- parameters
 def parse_mu_grid(text: str) -> list[float]:
-    """``"start:stop:step"`` (stop included) or ``"a,b,c"`` -> sorted friction values."""
-    text = str(text).strip()
-    bad = ArchdemInputError(f"friction grid must be START:STOP:STEP or a comma list, got {text!r}")
-    if ":" in text:
-        try:
-            a, b, s = (float(p) for p in text.split(":"))
-        except ValueError:
-            raise bad from None
-        if not (s > 0 and b >= a):
-            raise ArchdemInputError(f"friction grid {text!r}: need start <= stop and step > 0")
-        n = int(math.floor((b - a) / s + 1e-9)) + 1
-        if n > 1000:
-            raise ArchdemInputError(f"friction grid {text!r} has {n} values (at most 1000)")
-        vals = [a + k * s for k in range(n)]
-    else:
-        try:
-            vals = [float(p) for p in text.split(",") if p.strip()]
-        except ValueError:
-            raise bad from None
-    return check_mus(vals)
+    """``"start:stop:step"`` (stop included) or ``"a,b,c"`` -> sorted friction values
+    (:func:`specimens.io.parse_grid`)."""
+    return check_mus(parse_grid(str(text).strip(), "friction grid"))
 
 
 def check_mus(mus: Sequence[float]) -> list[float]:

@@ -50,6 +50,10 @@ FORMAT = "archdem-shake-1"
 LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module docstring)
 
 
+#: Longest tail or run a protocol accepts [s]: 600 simulated seconds are hours of wall time.
+MAX_SIMULATED_S = 600.0
+
+
 @dataclass(frozen=True)
 class ShakeProtocol:
     """Parameters of a shake run (stored with each result)."""
@@ -68,12 +72,12 @@ class ShakeProtocol:
     rest_span: float = 3e-4  # largest minus smallest displacement over rest_window / size
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.tail) and self.tail >= 0):
-            raise ArchdemInputError(f"zero tail must be >= 0 s, got {self.tail!r}")
+        if not (math.isfinite(self.tail) and 0 <= self.tail <= MAX_SIMULATED_S):
+            raise ArchdemInputError(f"zero tail must be between 0 and {MAX_SIMULATED_S:g} s, got {self.tail!r}")
         if self.rest_after is not None and not (math.isfinite(self.rest_after) and self.rest_after >= 0):
             raise ArchdemInputError(f"shake protocol rest_after must be >= 0 s or None, got {self.rest_after!r}")
-        if self.duration is not None and not (math.isfinite(self.duration) and self.duration > 0):
-            raise ArchdemInputError(f"--duration must be a positive number of seconds, got {self.duration!r}")
+        if self.duration is not None and not (math.isfinite(self.duration) and 0 < self.duration <= MAX_SIMULATED_S):
+            raise ArchdemInputError(f"--duration must be between 0 and {MAX_SIMULATED_S:g} s, got {self.duration!r}")
         for k in ("collapse_fraction", "record_every", "onset_mm", "rest_window", "rest_span"):
             v = getattr(self, k)
             if not (math.isfinite(v) and v > 0):

@@ -1,0 +1,63 @@
+"""Bad numbers and grids on the command line: one line on stderr, exit 2, nothing written."""
+import subprocess
+import sys
+
+import pytest
+
+from dem.cli import main
+
+
+@pytest.mark.parametrize("argv, msg", [
+    (["domain", "Sh06-Sd015", "--freq", "1:1e9:1e-9"], "holds more than 1000 values"),
+    (["domain", "Sh06-Sd015", "--freq", "4,,6"], "--freq: expected a list"),
+    (["domain", "Sh06-Sd015", "--freq", ""], "--freq: expected a list"),
+    (["domain", "Sh06-Sd015", "--tol", "0"], "--tol must be a relative tolerance"),
+    (["domain", "Sh06-Sd015", "--tol", "-1"], "--tol must be a relative tolerance"),
+    (["domain", "Sh06-Sd015", "--tol", "nan"], "--tol must be a relative tolerance"),
+    (["domain", "Sh06-Sd015", "--engine", "dem", "--freq", ""], "--freq: expected a list"),
+    (["rock", "Sh06-Sd015", "--freq", "4", "--amplitude", "inf"], "--amplitude (in g) must be a positive number"),
+    (["rock", "Sh06-Sd015", "--freq", "0", "--amplitude", "0.3"], "--freq must be a positive number, got 0"),
+    (["threshold", "Sh06-Sd015", "--sine", "4", "--tol", "2"], "--tol must be a relative tolerance"),
+    (["map", "--mu", "0.3,,0.6"], "friction grid: expected a list"),
+    (["campaign", "--steps", "", "--out", "c"], "--steps: give step names"),
+    (["campaign", "--workers", "0", "--out", "c"], "--workers: must be a whole number of processes >= 1"),
+    (["threshold", "Sh02-Sd020", "--sine", "4", "--workers", "0"], "--workers: must be a whole number"),
+    (["domain", "Sh02-Sd020", "--workers", "0"], "--workers: must be a whole number"),
+    (["domain", "Sh02-Sd020", "--engine", "dem", "--workers", "-1"], "--workers: must be a whole number"),
+    (["map", "--workers", "0"], "--workers: must be a whole number"),
+    (["compare-engines", "--workers", "1.5"], "--workers: must be a whole number"),
+    (["tilt", "Sh02-Sd020", "--workers", "2"], "go with --ensemble"),
+    (["shake", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "1e30", "--sine", "4", "--amplitude", "0.3"], "at most 1000 m"),
+    (["shake", "Sh02-Sd020", "--sine", "1e9", "--amplitude", "0.3"], "--sine must be a frequency in (0, 100] Hz"),
+    (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "1e300"], "--amplitude must be in (0, 100] g"),
+    (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "0.3", "--tail", "1e9"], "between 0 and 600 s"),
+    (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "0.3", "--plot", "p.xyz"], "--plot must end in"),
+    (["threshold", "Sh02-Sd020", "--sine", "1e9"], "--sine must be a frequency"),
+    (["tilt", "Sh02-Sd020", "--plot", "p.xyz"], "--plot must end in"),
+    (["tilt", "Sh02-Sd020", "--plot", "old.png"], "exists"),
+    (["tilt", "Sh02-Sd020", "--plot", "folder.png"], "is a folder"),
+    (["tilt", "Sh02-Sd020", "--Rc", "1e30"], "at most 1000 m"),
+    (["draw", "Sh02-Sd020", "--out", "o.txt"], "--out must end in"),
+    (["draw", "Sh02-Sd020", "--out", "old.png"], "exists"),
+    (["mesh", "Sh02-Sd020", "--out", "meshes"], "holds meshes already"),
+])
+def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "old.png").write_bytes(b"old")
+    (tmp_path / "folder.png").mkdir()
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "L1_p0.stl").write_text("old")
+    before = sorted((p, p.stat().st_mtime_ns) for p in tmp_path.rglob("*"))
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and msg in err
+    assert sorted((p, p.stat().st_mtime_ns) for p in tmp_path.rglob("*")) == before
+
+
+def test_a_closed_pipe_ends_the_command_quietly():
+    # the reader goes away before the answer is written (as `archdem specimens --json | head -c0`)
+    p = subprocess.Popen([sys.executable, "-m", "dem.cli", "specimens", "--json"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE)
+    p.stdout.close()
+    err = p.stderr.read().decode()
+    assert p.wait() == 1 and err == ""
