@@ -44,10 +44,27 @@ def all_steps() -> dict[str, tuple[StepFunc, str]]:
 
 
 def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
-    """Run (or resume) the campaign; return the manifest."""
-    all_steps()
+    """Run (or resume) the campaign; return the manifest. One process at a time per folder: a
+    second one is refused (``OUT/.archdem.lock``)."""
+    from specimens.io import exclusive
+
+    ctx.out.mkdir(parents=True, exist_ok=True)
+    with exclusive(ctx.out / LOCK_FILE, f"the campaign folder {ctx.out}"):
+        return _run_campaign(ctx, steps)
+
+
+#: The lock file of a campaign folder (held while a campaign writes into it).
+LOCK_FILE = ".archdem.lock"
+
+
+def _complete(out: Path, name: str, outputs: dict) -> bool:
+    """A finished step's folder holds every table and figure its record lists."""
+    files = [t["csv"] for t in outputs.get("tables", [])] + [f["path"] for f in outputs.get("figures", [])]
+    return (out / name).is_dir() and all((out / f).is_file() for f in files)
+
+
+def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
     out = ctx.out
-    out.mkdir(parents=True, exist_ok=True)
     manifest_path = out / "campaign.json"
     manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
     params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "quick": ctx.quick,
@@ -63,10 +80,12 @@ def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
     manifest["provenance"] = provenance()
     for name in steps or list(STEPS):
         func, desc = STEPS[name]
-        if name in manifest["steps"] and (out / name).is_dir():
-            ctx.log(f"[{name}] already done ({desc}); kept")
-            ctx.results[name] = manifest["steps"][name]["outputs"]
-            continue
+        if name in manifest["steps"]:
+            if _complete(out, name, manifest["steps"][name]["outputs"]):
+                ctx.log(f"[{name}] already done ({desc}); kept")
+                ctx.results[name] = manifest["steps"][name]["outputs"]
+                continue
+            ctx.log(f"[{name}] recorded as done but its files are incomplete (an interrupted or older run); run again")
         ctx.log(f"[{name}] {desc} ...")
         tmp = out / f".{name}.part"
         if tmp.exists():

@@ -72,3 +72,48 @@ def test_the_record_step_finds_its_record():
     from dem.campaign.step_record import _record_path
 
     assert _record_path().is_file()
+
+
+def test_a_second_writer_of_a_campaign_folder_is_refused(tmp_path, capsys):
+    """Two campaigns into one folder: while another process holds the folder, a campaign there
+    is refused in one line (exit 2) and writes nothing."""
+    import subprocess
+    import sys
+
+    from dem.campaign.runner import LOCK_FILE
+    from dem.cli import main
+
+    out = tmp_path / "c"
+    out.mkdir()
+    holder = subprocess.Popen(
+        [sys.executable, "-c", "import sys, time; from specimens.io import exclusive\n"
+         f"with exclusive({str(out / LOCK_FILE)!r}, 'x'):\n    print('held', flush=True); time.sleep(30)"],
+        stdout=subprocess.PIPE, text=True)
+    try:
+        assert holder.stdout.readline().strip() == "held"
+        assert main(["campaign", "--steps", "catalogue", "--specimens", "Sh02-Sd020", "--out", str(out)]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "being written by another archdem process" in err
+        assert [p.name for p in out.iterdir()] == [LOCK_FILE]
+    finally:
+        holder.kill()
+        holder.wait()
+
+
+def test_a_step_recorded_done_with_missing_files_is_run_again(tmp_path):
+    from dem.campaign.runner import run_campaign
+
+    log: list[str] = []
+    ctx = CampaignContext(out=tmp_path, specimens=select_specimens("Sh02-Sd020"), log=log.append)
+    run_campaign(ctx, ["catalogue"])
+    table = tmp_path / "catalogue" / "catalogue.csv"
+    text = table.read_text()
+    table.unlink()  # as an interrupted older version could leave it
+    log.clear()
+    run_campaign(ctx, ["catalogue"])
+    assert any("incomplete" in ln for ln in log) and not any("kept" in ln for ln in log)
+    assert table.read_text() == text
+    log.clear()
+    run_campaign(ctx, ["catalogue"])
+    assert [ln for ln in log if ln.startswith("[catalogue]")] == [
+        "[catalogue] already done (specimen catalogue, drawings and meshes); kept"]
