@@ -122,12 +122,27 @@ def _resolve_units(src: _Src, header_units: str | None, declared: str | None, li
     return d, "declared"
 
 
+#: Sanity bounds of a record file (strong-motion records are sampled at 50-1000 Hz, last seconds to
+#: minutes and peak below 5 g): beyond them the file is misread (a wrong unit, a wrong header).
+RECORD_DT_RANGE = (1e-5, 1.0)  # s
+MIN_RECORD_S = 0.01  # s: 20 steps of the default simulator step
+MAX_RECORD_PGA_G = 20.0
+
+
 def _motion(src: _Src, values: list[float], dt: float, units: str, name: str, fmt: str, dt_line: int) -> SampledMotion:
     if not (math.isfinite(dt) and dt > 0):
         raise src.error(dt_line, f"time step must be positive, got {dt!r}")
+    if not RECORD_DT_RANGE[0] <= dt <= RECORD_DT_RANGE[1]:
+        raise src.error(dt_line, f"time step {dt:g} s is outside {RECORD_DT_RANGE[0]:g}-{RECORD_DT_RANGE[1]:g} s "
+                                 "(a misread header?)")
     if len(values) < 2:
         raise src.error(dt_line, f"a record needs at least 2 samples, got {len(values)}")
+    if (len(values) - 1) * dt < MIN_RECORD_S:
+        raise src.error(dt_line, f"the record lasts {(len(values) - 1) * dt:g} s, less than {MIN_RECORD_S:g} s")
     v = np.asarray(values, dtype=float) * UNIT_FACTORS[units]
+    pga_g = float(np.max(np.abs(v))) / G
+    if not (math.isfinite(pga_g) and pga_g <= MAX_RECORD_PGA_G):
+        raise src.error(dt_line, f"peak acceleration {pga_g:.3g} g is above {MAX_RECORD_PGA_G:g} g (wrong units?)")
     return SampledMotion(v, dt, name=" ".join(name.split()), source=f"{src.path.name} ({fmt})")
 
 

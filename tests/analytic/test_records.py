@@ -115,6 +115,13 @@ def _malformed(tmp_path):
     cases.append(("text.csv", "time,acc [g]\n0,0.1\n0.01,0.2\n0.02,x0.3\n", 4, "x0.3"))
     cases.append(("uneven.csv", "time,acc [g]\n0,0.1\n0.01,0.2\n0.02,0\n0.03,0\n0.07,0.3\n", 6, "constant step"))
     cases.append(("nounits.csv", "0,0.1\n0.01,0.2\n0.02,0.3\n", 1, "units"))
+    # sanity bounds: a header read as a 1000 s step, a record of a few microseconds, a 5e4 g sample
+    slow = list(at2)
+    slow[3] = slow[3].replace(".0100", "1000.")
+    cases.append(("dt.AT2", "\n".join(slow), 4, "time step 1000 s is outside"))
+    cases.append(("short.csv", "time,acc [g]\n0,0.1\n0.001,0.2\n0.002,0.1\n", 2, "less than 0.01 s"))
+    cases.append(("tiny.csv", "time,acc [g]\n0,0.1\n0.000005,0.2\n", 2, "outside"))
+    cases.append(("peak.csv", "time,acc [g]\n0,0.1\n0.01,50000\n0.02,0\n", 2, "above 20 g"))
     out = []
     for name, text, line, words in cases:
         p = tmp_path / name
