@@ -23,6 +23,7 @@ from analytic.mechanism import Mechanism
 from analytic.search import midpoint, search
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
+from specimens.processes import die_with_parent
 
 INPUTS = ("sine", "sine0", "A", "B")
 
@@ -204,7 +205,7 @@ def failure_domain(mech: Mechanism, kind: str, xs: Sequence[float], a_max_ratio:
     if workers <= 1 or len(xs) == 1:
         cols = [_column_job(j) for j in jobs]
     else:
-        with ProcessPoolExecutor(max_workers=min(workers, len(xs))) as ex:
+        with ProcessPoolExecutor(max_workers=min(workers, len(xs)), initializer=die_with_parent) as ex:
             cols = list(ex.map(_column_job, jobs, chunksize=max(1, len(xs) // (4 * workers))))
     return FailureDomain(kind, tuple(cols), mech.lam, mech.omega0, mech.phi_cr, restitution, (a_min, a_max), tol,
                          "frequency" if kind.startswith("sine") else "duration")

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import warnings
 
+from specimens.processes import die_with_parent
+
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
             min_spacing: float = 0.0, disc_kw: dict | None = None, continuous=None) -> dict:
@@ -85,5 +87,5 @@ def multiplier_series(specimens) -> list[dict]:
     workers = min(len(specimens), os.cpu_count() or 1)
     if workers <= 1:
         return [_series_row(s) for s in specimens]
-    with ProcessPoolExecutor(workers) as ex:
+    with ProcessPoolExecutor(workers, initializer=die_with_parent) as ex:
         return list(ex.map(_series_row, specimens))

@@ -16,6 +16,7 @@ from dem.core.settings import Settings
 from dem.experiments.tilt_check import TiltCheck, check_result, reference_lp
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
+from specimens.processes import die_with_parent
 
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
 
@@ -125,7 +126,7 @@ def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("
     else:
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(min(workers, len(jobs))) as ex:
+        with ProcessPoolExecutor(min(workers, len(jobs)), initializer=die_with_parent) as ex:
             out = list(ex.map(_one, jobs))
     return [r for rows in out for r in rows]
 

@@ -41,6 +41,7 @@ from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, collapses
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
+from specimens.processes import die_with_parent
 
 SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
 
@@ -124,7 +125,7 @@ def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
 def _map(fn, jobs: list, workers: int) -> list:
     if workers <= 1 or len(jobs) <= 1:
         return [fn(j) for j in jobs]
-    with ProcessPoolExecutor(max_workers=min(workers, len(jobs))) as ex:
+    with ProcessPoolExecutor(max_workers=min(workers, len(jobs)), initializer=die_with_parent) as ex:
         return list(ex.map(fn, jobs))
 
 
@@ -182,7 +183,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
         return result()
-    with ProcessPoolExecutor(max_workers=min(workers, n)) as ex:
+    with ProcessPoolExecutor(max_workers=min(workers, n), initializer=die_with_parent) as ex:
         running: dict = {}  # future -> scan index, or None for the bisection's run
         nxt = 0
         while True:

@@ -336,20 +336,15 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
 
 
 # ----------------------------------------------------------------------------- executors
-def _ignore_sigint() -> None:
-    """Pool worker initialiser: Ctrl-C is handled by the main process alone."""
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
 class _LocalPool:
     def __init__(self, workers: int):
         import multiprocessing
         from concurrent.futures import ProcessPoolExecutor
 
+        from specimens.processes import pool_worker_init
+
         self.ex = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
-                                      initializer=_ignore_sigint)
+                                      initializer=pool_worker_init)
 
     def submit(self, fn, *args):
         return self.ex.submit(fn, *args)
