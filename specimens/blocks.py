@@ -205,7 +205,14 @@ def check_contact(contact: float) -> float:
         raise ArchdemInputError(f"effective contact must be a number in (0, 1], got {contact!r}") from None
     if not (math.isfinite(c) and 0 < c <= 1):
         raise ArchdemInputError(f"effective contact must be a fraction of the joint depth in (0, 1], got {contact!r}")
+    if c < MIN_EFFECTIVE_CONTACT:
+        raise ArchdemInputError(f"effective contact {c:g} is below {MIN_EFFECTIVE_CONTACT:g}: joints touching on less "
+                                "than that no longer carry an arch")
     return c
+
+
+#: Least effective contact accepted (no catalogue arch stands below about 0.4; 0.05 only catches typos).
+MIN_EFFECTIVE_CONTACT = 0.05
 
 
 def central_band(contact: float) -> tuple[float, float]:

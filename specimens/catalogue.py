@@ -54,7 +54,10 @@ def select_specimens(spec: str) -> list[Specimen]:
     """``all`` or a comma-separated list of ids."""
     if spec.strip() == "all":
         return list(CATALOGUE)
-    return [get_specimen(s.strip()) for s in spec.split(",") if s.strip()]
+    ids = [s.strip() for s in spec.split(",")]
+    if not all(ids):
+        raise ArchdemInputError(f"specimens: give 'all' or ids separated by commas, got {spec!r}")
+    return [get_specimen(s) for s in ids]
 
 
 FULL_SCALE_SPANS = (5.0, 10.0, 20.0)  # 2 Rc [m]

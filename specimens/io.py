@@ -74,6 +74,21 @@ def writable_dir(path: str | os.PathLike) -> Path:
     return p
 
 
+def can_make_dir(path: str | os.PathLike) -> Path:
+    """Check, without making anything, that the folder ``path`` exists and is writable or can be
+    made (its nearest existing parent is a writable folder): a run fails before it starts, and a
+    run that fails leaves no empty folder behind."""
+    p = Path(path)
+    q = p
+    while not q.exists() and q != q.parent:
+        q = q.parent
+    if not q.is_dir():
+        raise ArchdemInputError(f"cannot create directory {p}: {q} is not a folder")
+    if not os.access(q, os.W_OK | os.X_OK):
+        raise ArchdemInputError(f"cannot create directory {p}: {q} is not writable")
+    return p
+
+
 def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
     """Check that ``path`` can be written (its directory exists or can be made)."""
     p = Path(path)

@@ -65,8 +65,8 @@ def run(args: argparse.Namespace) -> int:
     label, arch = arch_from_args(args)
     mu_j = _finite_mu("--mu-joint", args.mu_joint, REFERENCE_MU_JOINT)
     mu_b = _finite_mu("--mu-base", args.mu_base, REFERENCE_MU_BASE)
-    if not (0 < args.effective_thickness <= 1):
-        raise ArchdemInputError(f"--effective-thickness must be in (0, 1], got {args.effective_thickness}")
+    if not (0.05 <= args.effective_thickness <= 1):
+        raise ArchdemInputError(f"--effective-thickness must be in [0.05, 1], got {args.effective_thickness}")
     res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.min_spacing,
                   discretisation_kwargs(args, arch))
     res["id"] = label

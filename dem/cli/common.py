@@ -11,11 +11,13 @@ from typing import Any
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
-from specimens.io import json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.io import can_make_dir, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
 
-#: Largest length an arch option takes [m] (a typo such as --Rc 1e30 is refused, not simulated).
-MAX_LENGTH_M = 1000.0
+#: Lengths an arch option takes [m] (a typo such as --Rc 1e30 is refused, not simulated).
+MIN_LENGTH_M, MAX_LENGTH_M = 1e-3, 1000.0
+#: Densities the commands take [kg/m^3].
+DENSITY_RANGE = (1.0, 1e5)
 
 
 def default_of(obj: Any, name: str) -> Any:
@@ -41,13 +43,16 @@ def default_of(obj: Any, name: str) -> Any:
 def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) -> None:
     """Arch by catalogue id (positional) or by parameters."""
     p.add_argument("id", nargs=None if id_required else "?", help="specimen id (see `archdem specimens`)")
-    g = p.add_argument_group(f"arch by parameters (instead of an id; SI units, m; lengths up to {MAX_LENGTH_M:g} m)")
+    g = p.add_argument_group(f"arch by parameters (instead of an id; SI units, m; lengths {MIN_LENGTH_M:g} to "
+                                f"{MAX_LENGTH_M:g} m)")
     for name in ("Ri", "Re", "e", "Sh", "Sd", "Rc"):
         g.add_argument(f"--{name}", type=float, default=None)
     g.add_argument("--width", type=float, default=None,
                    help=f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})")
-    g.add_argument("--voussoirs", type=int, default=None, help=f"voussoirs per side (default {DEFAULT_VOUSSOIRS})")
-    g.add_argument("--density", type=float, default=None, help=f"density [kg/m^3] (default {DEFAULT_DENSITY:g})")
+    g.add_argument("--voussoirs", type=int, default=None,
+                   help=f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})")
+    g.add_argument("--density", type=float, default=None,
+                   help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g})")
     p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
                    help="effective contact: every joint touches within its central fraction C of the depth, "
                         "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
@@ -62,8 +67,9 @@ def arch_from_args(args: argparse.Namespace):
 
     for name in ("Ri", "Re", "e", "Rc", "width"):
         v = getattr(args, name, None)
-        if v is not None and not (math.isfinite(v) and abs(v) <= MAX_LENGTH_M):
-            raise ArchdemInputError(f"--{name} must be a length of at most {MAX_LENGTH_M:g} m, got {v:g}")
+        lo = 0.0 if name == "e" else MIN_LENGTH_M
+        if v is not None and not (math.isfinite(v) and lo <= v <= MAX_LENGTH_M):
+            raise ArchdemInputError(f"--{name} must be a length between {lo:g} and {MAX_LENGTH_M:g} m, got {v:g}")
     width = args.width if args.width is not None else SPECIMEN_WIDTH
     by_radii = [args.Ri, args.Re, args.e]
     by_ratio = [args.Sh, args.Sd, args.Rc]
@@ -83,14 +89,20 @@ def arch_from_args(args: argparse.Namespace):
     return label, arch
 
 
+#: Most local worker processes a command starts.
+MAX_WORKERS = 256
+#: Most voussoirs per side (a typo such as 100000 would otherwise take the machine's memory).
+MAX_VOUSSOIRS = 100
+
+
 def workers_option(text: str) -> int:
-    """``--workers``: a whole number of processes >= 1 (the same rule on every command)."""
+    """``--workers``: a whole number of processes, 1 to MAX_WORKERS (the same rule on every command)."""
     try:
         n = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a whole number of processes >= 1, got {text!r}") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number of processes >= 1, got {text!r}")
+        n = 0
+    if not 1 <= n <= MAX_WORKERS:
+        raise argparse.ArgumentTypeError(f"must be a whole number of processes >= 1 (at most {MAX_WORKERS}), got {text!r}")
     return n
 
 
@@ -117,17 +129,24 @@ def resolve_contact(value: float | str | None, arch) -> float:
     return check_contact(value)
 
 
+def check_density(density: float) -> float:
+    """``--density`` within DENSITY_RANGE [kg/m^3], or a one-line input error."""
+    if not (math.isfinite(density) and DENSITY_RANGE[0] <= density <= DENSITY_RANGE[1]):
+        raise ArchdemInputError(f"--density must be between {DENSITY_RANGE[0]:g} and {DENSITY_RANGE[1]:g} kg/m^3, "
+                                f"got {density:g}")
+    return float(density)
+
+
 def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]:
     """The :func:`specimens.blocks.discretise` keywords of the arch options (``arch``: needed for
     ``--contact calibrated``)."""
     kw: dict[str, Any] = {}
     if getattr(args, "voussoirs", None) is not None:
-        if args.voussoirs < 1:
-            raise ArchdemInputError(f"--voussoirs must be >= 1, got {args.voussoirs}")
+        if not 1 <= args.voussoirs <= MAX_VOUSSOIRS:
+            raise ArchdemInputError(f"--voussoirs must be 1 to {MAX_VOUSSOIRS}, got {args.voussoirs}")
         kw["n_voussoirs"] = args.voussoirs
     if getattr(args, "density", None) is not None:
-        if not (args.density > 0 and math.isfinite(args.density)):
-            raise ArchdemInputError(f"--density must be positive, got {args.density}")
+        check_density(args.density)
         kw["density"] = args.density
     if getattr(args, "contact", None) is not None:
         kw["contact"] = resolve_contact(args.contact, arch)

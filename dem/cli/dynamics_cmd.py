@@ -7,6 +7,7 @@ import math
 from dem.cli.common import (
     add_arch_arguments,
     arch_from_args,
+    check_density,
     default_of,
     parse_grid,
     print_json,
@@ -38,9 +39,7 @@ def _restitution(text: str) -> float | None:
 
 def build_mechanism(args: argparse.Namespace):
     """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
-    density = args.density if args.density is not None else DEFAULT_DENSITY
-    if not (density > 0 and math.isfinite(density)):
-        raise ArchdemInputError(f"--density must be positive, got {density}")
+    density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
     if args.block is not None:
         from analytic.rocking_block import RockingBlock
 
@@ -112,8 +111,14 @@ def _run_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("sine inputs take --freq, not --durations")
     if not (math.isfinite(args.tol) and 0 < args.tol <= 0.5):
         raise ArchdemInputError(f"--tol must be a relative tolerance in (0, 0.5], got {args.tol}")
+    if not (math.isfinite(args.amax) and 1 < args.amax <= 1e3):
+        raise ArchdemInputError(f"--amax must be a ratio to the static onset in (1, 1000], got {args.amax:g}")
+    if not 2 <= args.scan <= MAX_GRID_POINTS:
+        raise ArchdemInputError(f"--scan must be 2 to {MAX_GRID_POINTS} amplitudes, got {args.scan}")
     xs = (parse_grid(PULSE_DURATIONS if args.durations is None else args.durations, "--durations") if pulses
           else parse_grid(SINE_FREQS if args.freq is None else args.freq))
+    if not 0.01 <= min(xs) <= max(xs) <= 100:
+        raise ArchdemInputError(f"{'--durations [s]' if pulses else '--freq [Hz]'} values must be in [0.01, 100]")
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, mech = build_mechanism(args)
@@ -156,14 +161,14 @@ def _run_rock(args: argparse.Namespace) -> int:
         label, mech = build_mechanism(args)
         what = f"record {motion.name or args.record} x {args.scale:g}"
     else:
-        if args.amplitude is None or not (math.isfinite(args.amplitude) and args.amplitude > 0):
-            raise ArchdemInputError(f"--amplitude (in g) must be a positive number, got {args.amplitude}")
+        if args.amplitude is None or not (math.isfinite(args.amplitude) and 0 < args.amplitude <= 100):
+            raise ArchdemInputError(f"--amplitude (in g) must be a positive number up to 100, got {args.amplitude}")
         pulses = args.input in ("A", "B")
         x = args.duration if pulses else args.freq
         if x is None:
             raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
-        if not (math.isfinite(x) and x > 0):
-            raise ArchdemInputError(f"{'--duration' if pulses else '--freq'} must be a positive number, got {x:g}")
+        if not (math.isfinite(x) and 0.01 <= x <= 100):
+            raise ArchdemInputError(f"{'--duration [s]' if pulses else '--freq [Hz]'} must be in [0.01, 100], got {x:g}")
         if args.plot:
             writable_file(args.plot, overwrite=False)
         label, mech = build_mechanism(args)

@@ -44,14 +44,16 @@ def _run(args: argparse.Namespace) -> int:
 
     specs = _specimens(args)
     mus = parse_mu_grid(args.mu)
-    if not (math.isfinite(args.mu_base) and args.mu_base > 0):
-        raise ArchdemInputError(f"--mu-base must be a positive number, got {args.mu_base}")
+    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
+
+    if not (math.isfinite(args.mu_base) and MIN_FRICTION <= args.mu_base <= MAX_FRICTION):
+        raise ArchdemInputError(f"--mu-base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {args.mu_base}")
     if args.workers is not None and args.workers < 1:
         raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
     if not (0 <= args.refine <= 20):
         raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
-    if not (math.isfinite(args.tol) and 0 < args.tol < 1):
-        raise ArchdemInputError(f"--tol must be in (0, 1), got {args.tol}")
+    if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
     if args.resume and args.out:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
     if args.resume:

@@ -9,6 +9,7 @@ from dem.cli.common import (
     add_arch_arguments,
     add_engine_argument,
     arch_from_args,
+    can_make_dir,
     default_of,
     discretisation_kwargs,
     figure_file,
@@ -43,13 +44,13 @@ def _model_and_settings(args: argparse.Namespace):
 
 
 #: Bounds of a sine pulse on the command line: beyond them a run answers nothing physical.
-MAX_SINE_HZ = 100.0  # at dt 0.5 ms, 20 steps per cycle
+MIN_SINE_HZ, MAX_SINE_HZ = 0.01, 100.0  # a 100 s cycle; at dt 0.5 ms, 20 steps per cycle
 MAX_AMPLITUDE_G = 100.0
 
 
 def _sine(args: argparse.Namespace) -> None:
-    if args.sine is not None and not (math.isfinite(args.sine) and 0 < args.sine <= MAX_SINE_HZ):
-        raise ArchdemInputError(f"--sine must be a frequency in (0, {MAX_SINE_HZ:g}] Hz, got {args.sine:g}")
+    if args.sine is not None and not (math.isfinite(args.sine) and MIN_SINE_HZ <= args.sine <= MAX_SINE_HZ):
+        raise ArchdemInputError(f"--sine must be a frequency in [{MIN_SINE_HZ:g}, {MAX_SINE_HZ:g}] Hz, got {args.sine:g}")
     a = getattr(args, "amplitude", None)
     if a is not None and not (math.isfinite(a) and 0 < a <= MAX_AMPLITUDE_G):
         raise ArchdemInputError(f"--amplitude must be in (0, {MAX_AMPLITUDE_G:g}] g, got {a:g}")
@@ -74,10 +75,10 @@ def _run_shake(args: argparse.Namespace) -> int:
                           **({"rest_after": None} if args.full else {}))
     if args.plot:
         figure_file(args.plot)
-    out = writable_dir(args.out)
+    can_make_dir(args.out)
     res = shake(model, motion, settings, proto, label=label)
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
-    path = save_shake(res, unique_run_path(out, stem))
+    path = save_shake(res, unique_run_path(writable_dir(args.out), stem))
     if args.plot:
         from dem.plotting.shake import save_shake_figure
 
@@ -103,10 +104,13 @@ def _run_threshold(args: argparse.Namespace) -> int:
     _sine(args)
     label, arch, _, model, settings = _model_and_settings(args)
     lam = static_onset(model, settings)
-    _positive("--a-min", args.a_min)
-    _positive("--a-max", args.a_max)
-    if not (math.isfinite(args.tol) and 0 < args.tol <= 0.5):
-        raise ArchdemInputError(f"--tol must be a relative tolerance in (0, 0.5], got {args.tol}")
+    for name, v in (("--a-min", args.a_min), ("--a-max", args.a_max)):
+        if v is not None and not (math.isfinite(v) and 0 < v <= MAX_AMPLITUDE_G):
+            raise ArchdemInputError(f"{name} must be in (0, {MAX_AMPLITUDE_G:g}] g, got {v:g}")
+    if not (math.isfinite(args.scan_ratio) and 1 < args.scan_ratio <= 10):
+        raise ArchdemInputError(f"--scan-ratio must be in (1, 10], got {args.scan_ratio:g}")
+    if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
     res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
                     a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
     a_max = res.a_range_g[1]

@@ -8,6 +8,7 @@ from dem.cli.common import (
     add_arch_arguments,
     add_engine_argument,
     arch_from_args,
+    can_make_dir,
     default_of,
     discretisation_kwargs,
     figure_file,
@@ -45,11 +46,11 @@ def _run(args: argparse.Namespace) -> int:
     settings = Settings(**kw)
     if args.plot:
         figure_file(args.plot)
-    out = writable_dir(args.out)
+    can_make_dir(args.out)
     res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start,
                                                                **({"rest_after": None} if args.full_hold else {})),
                label=label, assembly=asm)
-    path = save_result(res, unique_run_path(out, f"tilt-{label}-{args.config}"))
+    path = save_result(res, unique_run_path(writable_dir(args.out), f"tilt-{label}-{args.config}"))
     if args.plot:
         from dem.plotting.tilt import save_tilt_figure
 

@@ -13,6 +13,10 @@ from dataclasses import asdict, dataclass, fields, replace
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
 from specimens.errors import ArchdemInputError
 
+#: Friction coefficients a simulation takes: below 0.01 (ice on ice) a block slides at any tilt,
+#: and 10 already prevents any sliding of the catalogue.
+MIN_FRICTION, MAX_FRICTION = 0.01, 1e3
+
 
 @dataclass(frozen=True)
 class Settings:
@@ -64,6 +68,12 @@ class Settings:
             raise ArchdemInputError(f"record interval {self.record_every:g} s is shorter than dt {self.dt:g} s")
         if self.dt > 0.01:
             raise ArchdemInputError(f"time step dt = {self.dt:g} s is too large (use <= 0.01 s; default 5e-4)")
+        if self.dt < 1e-6:  # a million steps per simulated second: a typo, not a setting
+            raise ArchdemInputError(f"time step dt = {self.dt:g} s is too small (use >= 1e-6 s; default 5e-4)")
+        for name in ("mu_joint", "mu_base"):
+            if not MIN_FRICTION <= getattr(self, name) <= MAX_FRICTION:
+                raise ArchdemInputError(f"{name} = {getattr(self, name):g} is outside {MIN_FRICTION:g}-{MAX_FRICTION:g} "
+                                        "(no sliding: 10)")
         lo, hi = self.mode_window
         if not (0 < lo < hi <= self.collapse_fraction):
             raise ArchdemInputError("mode window must satisfy 0 < lo < hi <= collapse_fraction")

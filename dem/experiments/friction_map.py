@@ -81,13 +81,16 @@ def parse_mu_grid(text: str) -> list[float]:
 
 
 def check_mus(mus: Sequence[float]) -> list[float]:
-    """Sorted, de-duplicated friction values rounded to 1e-9 (stable case keys); all > 0."""
+    """Sorted, de-duplicated friction values rounded to 1e-9 (stable case keys), each within the
+    simulator's range (``Settings``: MIN_FRICTION to MAX_FRICTION)."""
+    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
+
     out = sorted({round(float(m), 9) for m in mus})
     if not out:
         raise ArchdemInputError("the friction grid is empty")
     for m in out:
-        if not (math.isfinite(m) and m > 0):
-            raise ArchdemInputError(f"friction coefficients must be finite and > 0, got {m!r}")
+        if not (math.isfinite(m) and MIN_FRICTION <= m <= MAX_FRICTION):
+            raise ArchdemInputError(f"friction coefficients must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {m!r}")
     return out
 
 
@@ -363,8 +366,10 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     t0 = time.perf_counter()
     specs = _specimen_list(specimens)
     grid = parse_mu_grid(mus) if isinstance(mus, str) else check_mus(mus)
-    if not (isinstance(mu_base, (int, float)) and math.isfinite(mu_base) and mu_base > 0):
-        raise ArchdemInputError(f"mu_base must be a finite number > 0, got {mu_base!r}")
+    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
+
+    if not (isinstance(mu_base, (int, float)) and math.isfinite(mu_base) and MIN_FRICTION <= mu_base <= MAX_FRICTION):
+        raise ArchdemInputError(f"mu_base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {mu_base!r}")
     if not (isinstance(refine, int) and 0 <= refine <= 20):
         raise ArchdemInputError(f"refine (bisection steps) must be an integer in 0..20, got {refine!r}")
     contact_of = ({str(k): check_contact(v) for k, v in contact.items()} if isinstance(contact, Mapping)
