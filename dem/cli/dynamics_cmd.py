@@ -109,8 +109,8 @@ def _run_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("pulses A/B take --durations, not --freq")
     if not pulses and args.durations is not None:
         raise ArchdemInputError("sine inputs take --freq, not --durations")
-    if not (math.isfinite(args.tol) and 0 < args.tol <= 0.5):
-        raise ArchdemInputError(f"--tol must be a relative tolerance in (0, 0.5], got {args.tol}")
+    if not (math.isfinite(args.tol) and 1e-4 <= args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in [0.0001, 0.5], got {args.tol}")
     if not (math.isfinite(args.amax) and 1 < args.amax <= 1e3):
         raise ArchdemInputError(f"--amax must be a ratio to the static onset in (1, 1000], got {args.amax:g}")
     if not 2 <= args.scan <= MAX_GRID_POINTS:

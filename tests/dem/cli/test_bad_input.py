@@ -61,6 +61,7 @@ from dem.cli import main
     (["domain", "Sh02-Sd020", "--freq", "1e20"], "values must be in [0.01, 100]"),
     (["compare-engines", "--specimens", " "], "specimens: give 'all' or ids"),
     (["threshold", "Sh02-Sd020", "--sine", "4", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.001, 0.5]"),
+    (["domain", "Sh02-Sd020", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.0001, 0.5]"),
     (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--mu-base", "1e-30"], "--mu-base must be 0.01 to 1000"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
