@@ -13,6 +13,7 @@ from typing import Literal
 
 import numpy as np
 
+from specimens.blocks import band_points, central_band
 from specimens.geometry import PointedArch, ring_segment_properties
 from specimens.sections import SectionProperties
 
@@ -35,18 +36,14 @@ class Hinge:
     contact: float = 1.0
 
     def point(self, arch: PointedArch) -> np.ndarray:
-        if self.face == "extrados" and self.psi > arch.psi_i:
-            e_pt = arch.point(self.psi, arch.Re, self.side)
-            if self.contact == 1.0:
-                return e_pt
-            i_pt = np.array([0.0, arch.Ri * np.sin(arch.psi_i)])
-            mid = 0.5 * (i_pt + e_pt)
-            return mid + self.contact * (e_pt - mid)
         if self.contact == 1.0:
-            r = arch.Ri if self.face == "intrados" else arch.Re
+            return arch.point(self.psi, arch.Ri if self.face == "intrados" else arch.Re, self.side)
+        if self.face == "extrados" and self.psi > arch.psi_i:  # the fan cut from the intrados apex
+            i_pt = np.array([0.0, arch.Ri * np.sin(arch.psi_i)])
         else:
-            r = arch.Rp + (-0.5 if self.face == "intrados" else 0.5) * self.contact * arch.t
-        return arch.point(self.psi, r, self.side)
+            i_pt = arch.point(self.psi, arch.Ri, self.side)
+        ends = band_points(i_pt, arch.point(self.psi, arch.Re, self.side), central_band(self.contact))
+        return ends[0] if self.face == "intrados" else ends[1]
 
     def polar_about_origin(self, arch: PointedArch) -> float:
         p = self.point(arch)

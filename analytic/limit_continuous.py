@@ -38,7 +38,7 @@ import numpy as np
 
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock, continuous_layout
 from analytic.limit_discrete import four_hinge_lambda
-from specimens.blocks import check_contact
+from specimens.blocks import band_points, central_band, check_contact
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import Arc, Segment, region_properties
@@ -104,10 +104,7 @@ class RingCuts:
     def contact_ends(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Ends (..., 2) of the central ``contact`` fraction of the cut at ``u``: the hinge points."""
         I, E = self.ends(u)
-        if self.contact == 1.0:
-            return I, E
-        mid = 0.5 * (I + E)
-        return mid + self.contact * (I - mid), mid + self.contact * (E - mid)
+        return band_points(I, E, central_band(self.contact))
 
     def cumulative(self, u: np.ndarray) -> np.ndarray:
         """(A, Sx, Sy) per unit width of the ring from the left springing to the cut at ``u``."""
