@@ -100,7 +100,6 @@ def _run_threshold(args: argparse.Namespace) -> int:
     from dem.experiments.shake import ShakeProtocol
     from dem.experiments.thresholds import static_onset, threshold
 
-    _positive("--sine", args.sine)
     _sine(args)
     label, arch, _, model, settings = _model_and_settings(args)
     lam = static_onset(model, settings)
