@@ -147,8 +147,8 @@ def _motion(src: _Src, values: list[float], dt: float, units: str, name: str, fm
 
 
 # ----------------------------------------------------------------------------- PEER AT2
-_NPTS_RE = re.compile(r"NPTS\s*=\s*(\d+)\s*,\s*DT\s*=\s*([-+0-9.Ee]+)", re.IGNORECASE)
-
+_NPTS_RE = re.compile(r"NPTS\s*=\s*([^,\s]*)", re.IGNORECASE)
+_DT_RE = re.compile(r"DT\s*=\s*([^,\s]*)", re.IGNORECASE)
 
 def _read_at2(src: _Src, units: str | None) -> Record:
     rows = src.nonblank()
@@ -163,19 +163,25 @@ def _read_at2(src: _Src, units: str | None) -> Record:
         header_units = canonical_units(m.group(1))
         if header_units is None:
             raise src.error(l_q, f"unknown acceleration units {m.group(1)!r}")
-    mm = _NPTS_RE.search(nline)
-    if mm:
-        npts_s, dt_s = mm.group(1), mm.group(2)
+    mn, md = _NPTS_RE.search(nline), _DT_RE.search(nline)
+    if mn or md:  # "NPTS=   5372, DT=   .0100 SEC,"
+        if not (mn and md):
+            raise src.error(l_n, f"cannot read NPTS and DT from {nline.strip()!r}")
+        npts_s, dt_s = mn.group(1), md.group(1)
     else:  # old NGA: "4096    0.0100    NPTS, DT"
         tok = nline.replace(",", " ").split()
         if len(tok) < 2 or "NPTS" not in nline.upper():
             raise src.error(l_n, f"cannot read NPTS and DT from {nline.strip()!r}")
         npts_s, dt_s = tok[0], tok[1]
+    if not npts_s.isdigit() or int(npts_s) < 1:
+        raise src.error(l_n, f"NPTS must be a positive whole number, got {npts_s!r}")
+    npts = int(npts_s)
     try:
-        npts = int(npts_s)
+        dt = float(dt_s)
     except ValueError:
-        raise src.error(l_n, f"NPTS is not an integer: {npts_s!r}") from None
-    dt = _float(src, l_n, dt_s)
+        dt = math.nan
+    if not (math.isfinite(dt) and dt > 0):
+        raise src.error(l_n, f"DT must be a positive time step in s, got {dt_s!r}")
     values: list[float] = []
     last = None
     for ln, text in rows[4:]:

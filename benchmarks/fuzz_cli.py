@@ -2,8 +2,9 @@
 stderr, no traceback and no file left behind.
 
 Each case is a valid minimal command line with one option given a bad value (not a number,
-NaN, infinite, negative, zero, absurdly large, an empty or broken grid...), drawn with a seeded
-generator; each runs as its own process in an empty folder. Writes benchmarks/results/fuzz_cli.json.
+NaN, infinite, negative, zero, absurdly large, an empty or broken grid...), or a command reading
+one of the real record files with one field damaged, drawn with a seeded generator; each runs as
+its own process in an empty folder (but for the record it reads). Writes benchmarks/results/fuzz_cli.json.
 
     python benchmarks/fuzz_cli.py [--n 500] [--seed 1] [--workers 2]
 """
@@ -38,16 +39,37 @@ COMMANDS = [
                                                                           "--width", "--voussoirs", "--density"]),
     ("threshold", ARCH + ["--sine", "4"], ["--contact", "--mu-joint", "--mu-base", "--dt", "--tail", "--sine", "--a-min",
                                            "--a-max", "--scan-ratio", "--tol", "--workers"]),
+    ("draw", ["--Sh", "0.6", "--Sd", "0.2", "--Rc", "0.2", "--out", "d.png"], ["--Sh", "--Sd", "--Rc", "--width"]),
+    ("analytic", ["--Ri", "0.2", "--Re", "0.25", "--e", "0.1"], ["--Ri", "--Re", "--e", "--voussoirs"]),
+    ("map", ["--specimens", "Sh02-Sd020"], ["--resume"]),
     ("campaign", ["--out", "c", "--specimens", "Sh02-Sd020"], ["--contact", "--workers", "--steps", "--specimens"]),
     ("compare-engines", ["--specimens", "Sh02-Sd020"], ["--dt", "--workers", "--engines", "--specimens"]),
 ]
+#: Commands that read a record file: the value corrupted is a field of one of the real files.
+RECORD_COMMANDS = [("rock", ARCH + ["--freq", "4", "--scale", "1"]),
+                   ("shake", ARCH + ["--scale", "1", "--duration", "0.2", "--out", "s"])]
+RECORDS = Path(__file__).resolve().parents[1] / "tests" / "data" / "ground_motions"
 BAD = ["abc", "nan", "inf", "-inf", "-1", "0", "-0.0", "1e30", "1e-30", "", " ", "1,,2", "1:1e9:1e-9", "2:1:0.5",
        "1e309", "0x10", "99999999999999999999", "-1e30"]
 
 
-def run(case: tuple[list[str], int]) -> dict:
-    argv, k = case
+def corrupt_record(rng: np.random.Generator) -> tuple[str, bytes]:
+    """One of the real record files with one field of its header or data replaced by a bad value."""
+    files = sorted(p for p in RECORDS.iterdir() if p.suffix.lower() in (".at2", ".smc"))
+    path = files[rng.integers(len(files))]
+    lines = path.read_text(errors="replace").splitlines()
+    i = int(rng.integers(min(len(lines), 40)))  # the header, or the first data lines
+    words = lines[i].split() or [""]
+    words[rng.integers(len(words))] = BAD[rng.integers(len(BAD))]
+    lines[i] = " ".join(words)
+    return path.name, ("\n".join(lines) + "\n").encode()
+
+
+def run(case: tuple[list[str], int, dict]) -> dict:
+    argv, k, inputs = case
     with tempfile.TemporaryDirectory() as tmp:
+        for name, data in inputs.items():
+            Path(tmp, name).write_bytes(data)
         t0 = time.perf_counter()
         try:
             p = subprocess.run([sys.executable, "-m", "dem.cli", *argv], cwd=tmp, capture_output=True, text=True,
@@ -55,7 +77,7 @@ def run(case: tuple[list[str], int]) -> dict:
             rc, err, out = p.returncode, p.stderr, p.stdout
         except subprocess.TimeoutExpired:
             rc, err, out = None, "", ""
-        left = sorted(str(f.relative_to(tmp)) for f in Path(tmp).rglob("*"))
+        left = sorted(str(f.relative_to(tmp)) for f in Path(tmp).rglob("*") if f.name not in inputs)
     lines = [ln for ln in err.splitlines() if ln.strip() and "pybullet build time" not in ln]
     return {"argv": argv, "rc": rc, "stderr_lines": len(lines), "traceback": "Traceback" in err,
             "files_left": left, "wall_s": time.perf_counter() - t0, "err": lines[-1] if lines else "", "stdout": out[-200:]}
@@ -70,9 +92,14 @@ def main() -> None:
     rng = np.random.default_rng(a.seed)
     cases = []
     for k in range(a.n):
+        if rng.random() < 0.1:  # a damaged record file
+            cmd, rest = RECORD_COMMANDS[rng.integers(len(RECORD_COMMANDS))]
+            name, data = corrupt_record(rng)
+            cases.append(([cmd, *rest, "--record", name], k, {name: data}))
+            continue
         cmd, rest, opts = COMMANDS[rng.integers(len(COMMANDS))]
         opt = opts[rng.integers(len(opts))]
-        cases.append(([cmd, *rest, opt, BAD[rng.integers(len(BAD))]], k))
+        cases.append(([cmd, *rest, opt, BAD[rng.integers(len(BAD))]], k, {}))
     t0 = time.perf_counter()
     with ThreadPoolExecutor(a.workers) as ex:
         rows = list(ex.map(run, cases))

@@ -110,21 +110,37 @@ def json_default(o: Any) -> Any:
 
 
 @contextlib.contextmanager
-def exclusive(lock_file: str | os.PathLike, what: str) -> Iterator[None]:
+def exclusive(lock_file: str | os.PathLike, what: str, remove: bool = False) -> Iterator[None]:
     """Hold an advisory lock on ``lock_file`` (made if missing) while writing ``what``; a second
-    writer is refused in one line instead of mixing its files with the first one's."""
+    writer is refused in one line instead of mixing its files with the first one's.
+
+    ``remove``: delete the lock file when done (for a lock beside a result file). A writer that
+    locked a file already removed by the previous holder notices it and locks the new one.
+    """
     import fcntl
 
-    fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        os.close(fd)
-        raise ArchdemInputError(f"{what} is being written by another archdem process; "
-                                "wait for it to finish or choose another output") from None
+    lock_file = Path(lock_file)
+    while True:
+        fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            os.close(fd)
+            raise ArchdemInputError(f"{what} is being written by another archdem process; "
+                                    "wait for it to finish or choose another output") from None
+        try:
+            same = os.stat(lock_file).st_ino == os.fstat(fd).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        os.close(fd)  # the previous holder removed this file after we opened it: lock the new one
     try:
         yield
     finally:
+        if remove:
+            with contextlib.suppress(FileNotFoundError):
+                lock_file.unlink()  # before unlocking, so that nobody locks a file about to vanish
         fcntl.flock(fd, fcntl.LOCK_UN)
         os.close(fd)
 

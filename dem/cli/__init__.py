@@ -62,11 +62,25 @@ def main(argv: list[str] | None = None) -> int:
         print("archdem: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
+        if not _stdout_gone():
+            raise  # a pipe of our own (e.g. to a worker) broke: that is a failure, not a closed reader
         # the reader of our output went away (e.g. | head): no traceback, and none at exit either
         import os
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+
+
+def _stdout_gone() -> bool:
+    """Whether standard output is a pipe whose reader has closed it."""
+    import select
+
+    try:
+        poller = select.poll()
+        poller.register(sys.stdout.fileno(), select.POLLOUT)
+        return any(ev & select.POLLERR for _, ev in poller.poll(0))
+    except (OSError, ValueError, AttributeError):  # no file descriptor (e.g. captured output)
+        return False
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -85,6 +85,10 @@ def arch_from_args(args: argparse.Namespace):
         arch = PointedArch.from_ratios(args.Sh, args.Sd, args.Rc, width=width)
     else:
         raise ArchdemInputError("give a specimen id, or all of --Ri --Re --e, or all of --Sh --Sd --Rc")
+    # lengths that follow from the given ones are bounded too (a ring 1e-280 m thick has no blocks)
+    for what, v in (("ring thickness", arch.t), ("span", arch.span), ("rise", arch.rise)):
+        if not MIN_LENGTH_M <= v:
+            raise ArchdemInputError(f"these parameters give a {what} of {v:.3g} m, below {MIN_LENGTH_M:g} m")
     label = f"Sh{arch.Sh:.3g}-Sd{arch.Sd:.3g}-Rc{arch.Rc:.3g}"
     return label, arch
 

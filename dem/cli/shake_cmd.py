@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 
 from dem.cli.common import (
     add_arch_arguments,
@@ -65,7 +66,7 @@ def _motion(args: argparse.Namespace):
 
 
 def _run_shake(args: argparse.Namespace) -> int:
-    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.experiments.shake import ANNOUNCE_SIMULATED_S, ShakeProtocol, shake
     from dem.formats.shake import save_shake
     from specimens.io import unique_run_path
 
@@ -76,6 +77,10 @@ def _run_shake(args: argparse.Namespace) -> int:
     if args.plot:
         figure_file(args.plot)
     can_make_dir(args.out)
+    total = proto.total_duration(motion)
+    if total > ANNOUNCE_SIMULATED_S:
+        print(f"archdem: simulating up to {total:g} s of motion and tail ({math.ceil(total / settings.dt)} steps of "
+              f"{settings.dt:g} s)" + ("" if args.full else "; stops at collapse, or once at rest after the motion"), file=sys.stderr)
     res = shake(model, motion, settings, proto, label=label)
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
     path = save_shake(res, unique_run_path(writable_dir(args.out), stem))

@@ -52,6 +52,8 @@ LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module 
 
 #: Longest tail or run a protocol accepts [s]: 600 simulated seconds are hours of wall time.
 MAX_SIMULATED_S = 600.0
+#: A run that may simulate longer than this [s] says so before it starts (it can take minutes).
+ANNOUNCE_SIMULATED_S = 10.0
 
 
 @dataclass(frozen=True)

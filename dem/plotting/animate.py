@@ -69,7 +69,7 @@ def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 
     from matplotlib import animation
     from matplotlib.figure import Figure
 
-    from specimens.io import atomic_path
+    from specimens.io import atomic_path, can_make_dir
 
     out = Path(out)
     ext = out.suffix.lower()
@@ -81,6 +81,7 @@ def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 
         raise ArchdemInputError("fps must be >= 1 and max_frames >= 2")
     if out.exists() and not overwrite:
         raise ArchdemInputError(f"{out} exists; not overwriting it (choose another --out)")
+    can_make_dir(out.parent)  # before any drawing: a failure leaves nothing behind
     run = read_run(path)
     model, h = run["model"], run["history"]
     if len(h.t) < 2:
@@ -117,11 +118,11 @@ def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 
         label.set_text(f"t = {h.t[k]:.3f} s   max displacement {h.dmax[k] * 1e3:.1f} mm")
         return patches + [cursor, label]
 
-    anim = animation.FuncAnimation(fig, update, frames=list(frames), blit=False)
     writer = animation.PillowWriter(fps=fps) if ext == ".gif" else animation.FFMpegWriter(fps=fps)
     with atomic_path(out, overwrite=overwrite) as tmp:
         tmp_ext = tmp.with_suffix(ext)
-        try:
+        try:  # the animation is made only once its file can be: an unsaved one is a library warning
+            anim = animation.FuncAnimation(fig, update, frames=list(frames), blit=False)
             anim.save(str(tmp_ext), writer=writer)
             tmp_ext.replace(tmp)
         finally:

@@ -38,6 +38,8 @@ recorded again). Cases stored in the file but absent from ``cases`` are kept in 
 ``resume=True`` on a file that does not exist yet starts a new study. A case group whose
 ``status`` attribute is missing (written last) was interrupted while being written and
 counts as not stored.
+One process writes a study at a time: it holds ``.NAME.lock`` beside the file (see
+:func:`lock_path`), and a second one is refused at once instead of interleaving its cases.
 On a Dask cluster a worker that dies is retried by Dask; a case that kills workers
 repeatedly (``KilledWorker``) is recorded as failed.
 """
@@ -60,7 +62,7 @@ from typing import Any, Iterator, Sequence
 import numpy as np
 
 from specimens.errors import ArchdemInputError
-from specimens.io import json_default
+from specimens.io import exclusive, json_default, writable_dir
 
 LAYOUT_VERSION = 1
 
@@ -317,7 +319,8 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
                 have = (str(f.attrs["case_function"]), str(f.attrs["study_attrs"]), str(f.attrs["seed"]))
                 done = {k for k, g in f.get("cases", {}).items() if g.attrs.get("status") == "ok"}
         except OSError as exc:
-            raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({exc})") from None
+            reason = str(exc).split("(")[0].strip() or type(exc).__name__  # HDF5's details span several lines
+            raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({reason})") from None
         for what, old, new in (("case function", have[0], func), ("study parameters", have[1], params_json),
                                ("seed", have[2], seed_json)):
             if old != new:
@@ -455,11 +458,21 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
         raise ArchdemInputError(f"workers must be a positive integer, got {workers!r}")
     if scheduler:
         check_scheduler(scheduler)  # before the study file is made: a refused address leaves nothing behind
-    done = _open_study(path, func, study_attrs, seed, resume)
-    todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
-    if todo:
-        _execute(todo, func, path, workers, scheduler, progress)
+    if path.is_dir():
+        raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
+    writable_dir(path.parent)
+    with exclusive(lock_path(path), f"the study file {path}", remove=True):
+        done = _open_study(path, func, study_attrs, seed, resume)
+        todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
+        if todo:
+            _execute(todo, func, path, workers, scheduler, progress)
     return load_study(path, cases)
+
+
+def lock_path(study: str | os.PathLike) -> Path:
+    """The lock file held beside a study file while a study writes into it (removed at the end)."""
+    study = Path(study)
+    return study.with_name(f".{study.name}.lock")
 
 
 def _execute(todo, func, path, workers, scheduler, progress) -> None:

@@ -122,6 +122,15 @@ def _malformed(tmp_path):
     cases.append(("short.csv", "time,acc [g]\n0,0.1\n0.001,0.2\n0.002,0.1\n", 2, "less than 0.01 s"))
     cases.append(("tiny.csv", "time,acc [g]\n0,0.1\n0.000005,0.2\n", 2, "outside"))
     cases.append(("peak.csv", "time,acc [g]\n0,0.1\n0.01,50000\n0.02,0\n", 2, "above 20 g"))
+    # header fields that are no numbers, or negative (the message names the field)
+    for k, (field, value, words) in enumerate([
+            ("5372", "-5372", "NPTS must be a positive whole number, got '-5372'"),
+            ("5372", "nan", "NPTS must be a positive whole number, got 'nan'"),
+            (".0100", "nan", "DT must be a positive time step in s, got 'nan'"),
+            (".0100", "-.0100", "DT must be a positive time step in s, got '-.0100'")]):
+        h = list(at2)
+        h[3] = h[3].replace(field, value)
+        cases.append((f"header{k}.AT2", "\n".join(h), 4, words))
     out = []
     for name, text, line, words in cases:
         p = tmp_path / name
@@ -262,3 +271,57 @@ def test_zero_tail():
     assert z.pga == m.pga and np.all(z.values[len(m.values):] == 0)
     s = z.to_pga(0.3 * G)  # scaling already in SampledMotion
     assert s.pga == pytest.approx(0.3 * G, rel=1e-12)
+
+
+# ------------------------------------------------------------------ random corruption of real files
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from analytic.records import MAX_RECORD_PGA_G, MIN_RECORD_S, RECORD_DT_RANGE  # noqa: E402
+
+_BAD_TOKENS = ["nan", "inf", "-inf", "-1", "0", "1e30", "1e-30", "-5372", "x", "", "NPTS=", "DT=nan", "1,,2", "\x00", "é"]
+_EDIT = st.tuples(st.sampled_from(["token", "delete", "duplicate", "truncate", "byte", "swap"]),
+                  st.floats(0, 1), st.floats(0, 1), st.sampled_from(_BAD_TOKENS), st.integers(0, 255))
+
+
+def _corrupt(data: bytes, edits) -> bytes:
+    """Apply random edits to a file: a token replaced, a line deleted or repeated, the file cut,
+    a byte changed, two lines swapped."""
+    for kind, f1, f2, tok, byte in edits:
+        lines = data.split(b"\n")
+        i, j = int(f1 * (len(lines) - 1)), int(f2 * (len(lines) - 1))
+        if kind == "token":
+            words = lines[i].split()
+            if words:
+                words[int(f2 * (len(words) - 1))] = tok.encode()
+            lines[i] = b" ".join(words)
+        elif kind == "delete":
+            del lines[i]
+        elif kind == "duplicate":
+            lines.insert(i, lines[i])
+        elif kind == "swap":
+            lines[i], lines[j] = lines[j], lines[i]
+        data = b"\n".join(lines)
+        if kind == "truncate":
+            data = data[:int(f1 * len(data))]
+        elif kind == "byte" and data:
+            k = int(f1 * (len(data) - 1))
+            data = data[:k] + bytes([byte]) + data[k + 1:]
+    return data
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(name=st.sampled_from(sorted(DOCUMENTED)), edits=st.lists(_EDIT, min_size=1, max_size=4))
+def test_a_corrupted_record_is_read_sanely_or_refused_in_one_line(tmp_path, name, edits):
+    """The real files, randomly damaged: each is either read into a motion within the stated
+    bounds, or refused with one line naming the file; never another exception."""
+    path = tmp_path / name
+    path.write_bytes(_corrupt((DATA / name).read_bytes(), edits))
+    try:
+        m = read_record(path)
+    except ArchdemInputError as exc:
+        assert "\n" not in str(exc) and str(exc).startswith(str(path))
+        return
+    assert RECORD_DT_RANGE[0] <= m.dt <= RECORD_DT_RANGE[1]
+    assert m.duration >= MIN_RECORD_S and np.all(np.isfinite(m.values))
+    assert np.max(np.abs(m.values)) / G <= MAX_RECORD_PGA_G

@@ -1,43 +1,28 @@
-"""Workers end with the process that started them: a SIGKILLed command leaves no process behind."""
-import os
-import signal
+"""Workers end with the process that started them: a SIGKILLed command leaves no process behind,
+and its study resumes with nothing lost or repeated."""
 import subprocess
 import sys
-import time
+
+from tests.kill import kill_when, outlived, stored_ok
 
 
-def _children(pid: int) -> list[int]:
-    out = subprocess.run(["ps", "-o", "pid=", "--ppid", str(pid)], capture_output=True, text=True).stdout
-    return [int(x) for x in out.split()]
-
-
-def _alive(pid: int) -> bool:
+def test_a_sigkilled_map_leaves_no_worker_and_resumes(tmp_path):
+    """A real `archdem map` on 2 workers, SIGKILLed once a case is stored: every worker is gone
+    within a few seconds (PARENT_POLL_S is 1 s), and `--resume` runs only what was missing."""
+    study = tmp_path / "m.h5"
+    args = [sys.executable, "-m", "dem.cli", "map", "--specimens", "Sh02-Sd020", "--mu", "0.3,0.5,0.7,0.9",
+            "--refine", "0", "--workers", "2"]
+    p = subprocess.Popen(args + ["--out", str(study)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
-        with open(f"/proc/{pid}/stat") as fh:  # a zombie is not alive: it only waits to be reaped
-            return fh.read().split(")")[-1].split()[0] != "Z"
-    except FileNotFoundError:
-        return False
-
-
-def test_a_sigkilled_map_leaves_no_worker(tmp_path):
-    """A real `archdem map` on 2 workers, killed with SIGKILL once its workers run: every worker
-    is gone within a few seconds (PARENT_POLL_S is 1 s)."""
-    p = subprocess.Popen([sys.executable, "-m", "dem.cli", "map", "--specimens", "Sh02-Sd020", "--mu", "0.3,0.6,0.9",
-                          "--refine", "0", "--workers", "2", "--out", str(tmp_path / "m.h5")],
-                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        t0, kids = time.monotonic(), []
-        while time.monotonic() - t0 < 60 and len(kids) < 2:
-            time.sleep(0.2)
-            kids = _children(p.pid)
-        assert len(kids) >= 2, "the map started no workers"
-        time.sleep(1.0)  # the workers have run their initialiser
-        os.kill(p.pid, signal.SIGKILL)
-        p.wait()
-        t0 = time.monotonic()
-        while time.monotonic() - t0 < 10 and any(_alive(k) for k in kids):
-            time.sleep(0.2)
-        assert not any(_alive(k) for k in kids), f"workers still running {time.monotonic() - t0:.1f} s after the kill"
+        kids = kill_when(p, lambda: len(stored_ok(study)) >= 1, workers=2)
     finally:
         if p.poll() is None:
             p.kill()
+    assert not outlived(kids), "workers still running 10 s after the kill"
+    before = stored_ok(study)
+    assert 1 <= len(before) < 4
+    done = subprocess.run(args + ["--resume", str(study)], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    after = stored_ok(study)
+    assert len(after) == 4
+    assert {k: after[k] for k in before} == before  # the cases stored before the kill were not run again

@@ -117,3 +117,35 @@ def test_a_step_recorded_done_with_missing_files_is_run_again(tmp_path):
     run_campaign(ctx, ["catalogue"])
     assert [ln for ln in log if ln.startswith("[catalogue]")] == [
         "[catalogue] already done (specimen catalogue, drawings and meshes); kept"]
+
+
+def test_a_sigkilled_campaign_leaves_no_worker_and_resumes(tmp_path):
+    """A real `archdem campaign` SIGKILLed in its tilt step once a case is stored: no worker
+    survives it, and the same command then finishes the step without re-running stored cases."""
+    import csv
+    import subprocess
+    import sys
+
+    from tests.kill import kill_when, outlived, stored_ok
+
+    out = tmp_path / "c"
+    study = out / "studies" / "tilt.h5"
+    args = [sys.executable, "-m", "dem.cli", "campaign", "--quick", "--steps", "tilt", "--workers", "2",
+            "--specimens", "Sh02-Sd020,Sh06-Sd020,Sh1-Sd020", "--out", str(out)]
+    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        kids = kill_when(p, lambda: len(stored_ok(study)) >= 1, workers=2)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    assert not outlived(kids), "workers still running 10 s after the kill"
+    before = stored_ok(study)
+    assert 1 <= len(before) < 3
+    assert not (out / "tilt" / "tilt.csv").exists()
+    done = subprocess.run(args, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    after = stored_ok(study)
+    assert len(after) == 3 and {k: after[k] for k in before} == before
+    with open(out / "tilt" / "tilt.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == 3 and all(0.1 < float(r["lambda_dem_reference"]) < 1.0 for r in rows)

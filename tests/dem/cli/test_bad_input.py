@@ -63,6 +63,10 @@ from dem.cli import main
     (["threshold", "Sh02-Sd020", "--sine", "4", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.001, 0.5]"),
     (["domain", "Sh02-Sd020", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.0001, 0.5]"),
     (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--mu-base", "1e-30"], "--mu-base must be 0.01 to 1000"),
+    (["map", "--specimens", "Sh02-Sd020", "--resume", "meshes"], "is a folder; a study is one .h5 file"),
+    (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--scheduler", "garbage"], "address is tcp://HOST:PORT"),
+    (["draw", "Sh02-Sd020", "--voussoirs", "100000", "--out", "v.png"], "--voussoirs must be 1 to 100"),
+    (["map", "--specimens", "Sh02-Sd020", "--resume", "old.png"], "not a readable HDF5 study file"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
     monkeypatch.chdir(tmp_path)
@@ -84,3 +88,67 @@ def test_a_closed_pipe_ends_the_command_quietly():
     p.stdout.close()
     err = p.stderr.read().decode()
     assert p.wait() == 1 and err == ""
+
+
+def test_a_broken_pipe_of_our_own_is_not_taken_for_a_closed_reader(monkeypatch):
+    """Only a closed standard output ends quietly; a pipe to a worker that broke is a failure."""
+    import dem.cli.specimens_cmd as cmd
+    from dem.cli import main
+
+    def broken(args):
+        raise BrokenPipeError("a worker went away")
+
+    register = cmd.register
+    monkeypatch.setattr(cmd, "register", lambda sub: (register(sub), sub.choices["specimens"].set_defaults(func=broken)))
+    with pytest.raises(BrokenPipeError, match="a worker went away"):
+        main(["specimens"])
+
+
+# ------------------------------------------------------------------ the arch options, generated
+from hypothesis import HealthCheck, event, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_NUMBER = st.one_of(st.floats(allow_nan=True, allow_infinity=True),
+                    st.floats(1e-4, 1e4, allow_nan=False),
+                    st.sampled_from([0.0, -0.0, 1e-300, 1e300, 0.001, 1000.0, 0.2, 0.6, 1.0]))
+_ARCH = st.one_of(
+    st.fixed_dictionaries({"Sh": st.floats(0, 1.2), "Sd": st.floats(0, 0.8), "Rc": st.floats(0.0005, 20)}),
+    st.fixed_dictionaries({"Ri": st.floats(0.0005, 5), "Re": st.floats(0.0005, 5), "e": st.floats(0, 5)}),
+    st.fixed_dictionaries({"Sh": _NUMBER, "Sd": _NUMBER, "Rc": _NUMBER}),
+    st.fixed_dictionaries({"Ri": _NUMBER, "Re": _NUMBER, "e": _NUMBER}),
+    st.fixed_dictionaries({"Sh": _NUMBER, "Sd": _NUMBER, "Rc": _NUMBER, "Ri": _NUMBER}),
+)
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(arch=_ARCH, extra=st.fixed_dictionaries({}, optional={
+    "width": st.one_of(st.floats(0.001, 2), _NUMBER), "density": st.one_of(st.floats(1, 1e4), _NUMBER),
+    "voussoirs": st.integers(-5, 200)}))
+def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
+    """The arch options as a command parses them, with any numbers: either an assembly whose every
+    body has a finite positive mass and finite geometry, or an input error of one line."""
+    import argparse
+    import math
+
+    import numpy as np
+
+    from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs
+    from specimens.blocks import discretise
+    from specimens.errors import ArchdemInputError
+
+    p = argparse.ArgumentParser()
+    add_arch_arguments(p)
+    args = p.parse_args([f"--{k}={v!r}" for k, v in {**arch, **extra}.items()])
+    try:
+        _, a = arch_from_args(args)
+        asm = discretise(a, **discretisation_kwargs(args, a))
+    except ArchdemInputError as exc:
+        assert "\n" not in str(exc) and str(exc)
+        event("refused")
+        return
+    event("built")
+    assert 0 < a.Ri < a.Re and all(math.isfinite(v) and v > 0 for v in (a.span, a.rise, a.area()))
+    assert asm.n_bodies >= 1 and len(asm.joints) >= 2
+    for b in asm.bodies:
+        assert math.isfinite(b.mass) and b.mass > 0 and np.all(np.isfinite(b.inertia))
+        assert np.all(np.isfinite(b.centroid)) and all(np.all(np.isfinite(q)) for q in b.pieces)

@@ -43,7 +43,9 @@ def test_shake_json_and_files(tmp_path, capsys):
     rc = main(["shake", *SMALL, "--sine", "4", "--amplitude", "0.3", "--json", "--out", str(out),
                "--plot", str(tmp_path / "h.png"), "--tail", "0.3"])
     assert rc == 0
-    d = json.loads(capsys.readouterr().out)
+    cap = capsys.readouterr()
+    assert "simulating up to" not in cap.err  # a short run starts without announcing itself
+    d = json.loads(cap.out)
     for k in ("collapsed", "t_collapse", "mode", "peak_crown_mm", "residual_crown_mm", "result_file",
               "collapse_phase", "joints"):
         assert k in d
@@ -56,6 +58,12 @@ def test_shake_json_and_files(tmp_path, capsys):
     assert (tmp_path / "h.png").stat().st_size > 0
     # the run file animates
     assert main(["animate", d["result_file"], "--out", str(tmp_path / "a.gif"), "--frames", "5"]) == 0
+    # ... and an output that cannot be made is refused in one line (no library warning), leaving nothing
+    capsys.readouterr()
+    for bad in (tmp_path / "h.png" / "b.gif", Path("/proc/archdem-none/b.gif")):
+        assert main(["animate", d["result_file"], "--out", str(bad), "--frames", "5"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "cannot create directory" in err, err
 
 
 def test_python_call_gives_the_cli_answer(tmp_path, capsys):
@@ -71,12 +79,18 @@ def test_python_call_gives_the_cli_answer(tmp_path, capsys):
         assert py[k] == cli[k], k
 
 
-def test_shake_record(tmp_path, capsys):
+def test_shake_record(tmp_path, capsys, monkeypatch):
+    """A record run; one longer than ANNOUNCE_SIMULATED_S (lowered here) states its length first."""
+    import dem.experiments.shake as shake_module
+
+    monkeypatch.setattr(shake_module, "ANNOUNCE_SIMULATED_S", 0.4)
     rec = DATA / "RSN77_SFERN_PUL164.AT2"
     rc = main(["shake", *SMALL, "--record", str(rec), "--pga", "0.2", "--duration", "0.5", "--json",
                "--out", str(tmp_path)])
     assert rc == 0
-    d = json.loads(capsys.readouterr().out)
+    cap = capsys.readouterr()
+    assert "archdem: simulating up to 0.5 s of motion and tail (1000 steps of 0.0005 s)" in cap.err
+    d = json.loads(cap.out)
     assert d["pga_g"] == pytest.approx(0.2) and d["duration"] == pytest.approx(0.5)
     assert d["input"]["kind"] == "record"
 

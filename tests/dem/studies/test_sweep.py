@@ -292,3 +292,37 @@ def test_dask_unreachable_scheduler_fails_quickly(tmp_path):
     th.join(3.0)
     assert not th.is_alive(), f"no answer {time.perf_counter() - t0:.1f} s after connecting to {address}"
     assert len(caught) == 1 and isinstance(caught[0], ArchdemInputError)
+
+
+def test_a_second_writer_of_a_study_file_is_refused_and_the_lock_goes_away(tmp_path):
+    """Two studies into one file at once: the second is refused at once (it would interleave its
+    cases with the first one's); the first completes, and its lock file is removed."""
+    from dem.studies.sweep import lock_path
+
+    p = tmp_path / "s.h5"
+    first = threading.Thread(target=run_study, args=(_cases(2, sleep=1.5), FUNC, p),
+                             kwargs={"workers": 1, "progress": False})
+    first.start()
+    try:
+        deadline = time.monotonic() + 30
+        while not p.exists() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert p.exists()
+        with pytest.raises(ArchdemInputError, match="being written by another archdem process"):
+            run_study(_cases(2, sleep=1.5), FUNC, p, resume=True, workers=1, progress=False)
+    finally:
+        first.join()
+    assert [r.ok for r in load_study(p).records] == [True, True]
+    assert not lock_path(p).exists()
+    run_study(_cases(3, sleep=1.5), FUNC, p, resume=True, workers=1, progress=False)  # the lock is free again
+    assert len(load_study(p).records) == 3
+
+
+def test_a_folder_is_not_a_study_file(tmp_path):
+    (tmp_path / "d").mkdir()
+    with pytest.raises(ArchdemInputError, match="is a folder"):
+        run_study(_cases(1), FUNC, tmp_path / "d", resume=True, progress=False)
+    bad = tmp_path / "bad.h5"
+    bad.write_text("not hdf5\n")
+    with pytest.raises(ArchdemInputError, match=r"not a readable HDF5 study file \([^\n]*\)$"):
+        run_study(_cases(1), FUNC, bad, resume=True, progress=False)
