@@ -343,7 +343,7 @@ def solve_lp(
     infeasible LP with ``lam = nan``), never an exception.
     """
     model = contact_model(assembly, mu_joint, mu_base)
-    res = solve_contact_lp(model, load_sign, length_scale=assembly.arch.Rp)
+    res = solve_contact_lp(model, load_sign, length_scale=assembly.length_scale)
     return LPResult(res.lam, res.status, res.message, res.stands, res.joint_states, res.joint_hinge_face,
                     res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(assembly.contact))
 
@@ -360,7 +360,9 @@ class KinematicResult:
     :class:`~analytic.layout.Hinge` on the joints' radial cuts (the hinge *points* used are the
     ends of the joints' contact, within the corners when ``contact < 1``); ``hinge_points`` (4, 2) [m];
     ``theta``: rotation rates of the three macro-blocks (block 1 = +-1); ``n_admissible``:
-    number of admissible layouts found; ``stands``: ``lam >= 0``.
+    number of admissible layouts found; ``stands``: ``lam >= 0``; ``joints``: indices of the
+    hinges' joints; ``blocks``: the three macro-blocks (also when a hinge is in a pier, where
+    ``layout`` is None: a layout describes radial cuts of the ring).
     """
 
     lam: float
@@ -375,6 +377,7 @@ class KinematicResult:
     load_sign: int = 1
     contact: float = 1.0
     joints: tuple[int, ...] = field(default=())
+    blocks: tuple[MacroBlock, ...] = field(default=())
 
 
 def _macro_block(bodies: Sequence, lo: int, hi: int) -> MacroBlock:
@@ -397,7 +400,7 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     nj = len(joints)
     if nj < 4:
         raise ArchdemInputError("a four-hinge mechanism needs at least 4 joints")
-    L = assembly.arch.Rp
+    L = assembly.length_scale
     corners = np.array([j.contact_points for j in joints]) / L  # (nj, 2 faces, 2)
     normals = np.array([j.normal for j in joints])
     m = np.array([b.mass for b in assembly.bodies])
@@ -430,12 +433,14 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     k = int(np.argmin(lam))
     jj, ff = J[k], Fc[k]
     hinges = tuple((joints[q].name, FACES[fc]) for q, fc in zip(jj, ff))
-    hinge_objs = tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc], f) for q, fc in zip(jj, ff))
     blocks = tuple(_macro_block(assembly.bodies, int(lo[k, i]), int(hi[k, i])) for i in range(3))
+    # a layout of radial cuts describes hinges on the ring only; a pier joint is no radial cut
+    layout = None if any(joints[q].in_pier for q in jj) else FourHingeLayout(
+        tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc], f) for q, fc in zip(jj, ff)), blocks)
     lam_k = float(lam[k])
     msg = "ok" if lam_k >= 0 else f"the arch cannot stand under self-weight (lambda = {lam_k:.4g} < 0)"
-    return KinematicResult(lam_k, hinges, FourHingeLayout(hinge_objs, blocks), H[k] * L, w.theta[k], nadm, len(J),
-                           lam_k >= 0, msg, s, f, tuple(int(q) for q in jj))
+    return KinematicResult(lam_k, hinges, layout, H[k] * L, w.theta[k], nadm, len(J),
+                           lam_k >= 0, msg, s, f, tuple(int(q) for q in jj), blocks)
 
 
 def macro_block_of_bodies(assembly: Assembly, lo: int, hi: int) -> MacroBlock:
@@ -458,7 +463,7 @@ def mechanism_lambda(assembly: Assembly, hinges) -> float:
     names = [j.name for j in assembly.joints]
     J = np.array([names.index(h) for h, _ in hinges])
     F = np.array([FACES.index(f) for _, f in hinges])
-    L = assembly.arch.Rp
+    L = assembly.length_scale
     corners = np.array([[j.p_i, j.p_e] for j in assembly.joints]) / L
     normals = np.array([j.normal for j in assembly.joints])
     m = np.array([b.mass for b in assembly.bodies])

@@ -105,6 +105,7 @@ class FourBar(_RingLinkage):
     hinges: tuple[Hinge, Hinge, Hinge, Hinge] | None = None
     name: str = "four-bar"
     g: float = G
+    joints: tuple[tuple[str, str], ...] = ()  # (joint name, face) of each hinge, when built on a discrete structure
 
     def __post_init__(self) -> None:
         (x1, y1), (x2, y2), (x3, y3), (x4, y4) = self.points
@@ -209,6 +210,12 @@ class FourBar(_RingLinkage):
         """The costlier candidates, searched only when the face-swapped layout is not admissible."""
         return alternative_four_bars(self) if self.arch is not None and self.hinges is not None else []
 
+    def summary(self) -> dict:
+        out = super().summary()
+        if self.joints:
+            out["hinges"] = [{"joint": j, "face": f} for j, f in self.joints]
+        return out
+
     def same_as(self, other: Mechanism) -> bool:
         """Same linkage (hinge points, blocks and sense)."""
         return (isinstance(other, FourBar) and np.allclose(self.points, other.points, rtol=0, atol=1e-12)
@@ -219,8 +226,9 @@ class FourBar(_RingLinkage):
         if self.others is None:
             raise ValueError("face swap needs the other end of every hinge's cut")
         hinges = tuple(h.swapped() for h in self.hinges) if self.hinges is not None else None
+        joints = tuple((j, "extrados" if f == "intrados" else "intrados") for j, f in self.joints)
         fb = replace(self, points=self.others, others=self.points, hinges=hinges, sense=1,
-                     name=_swap_name(self.name))
+                     name=_swap_name(self.name), joints=joints)
         return _orient(fb)
 
 
@@ -475,6 +483,27 @@ def minimised_four_bar(arch: PointedArch, density: float = 500.0, direction: int
     """The four-bar of the minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring)
     with effective contact ``contact``."""
     return arch_four_bar(arch, minimised_layout(arch, density, contact), density, direction=direction, name=name)
+
+
+def mechanism_four_bar(structure, direction: int | None = 1, name: str = "four-bar (discrete)") -> FourBar:
+    """The four-bar of the minimum discrete mechanism of ``structure`` (an assembly, on piers or
+    not, or a :class:`specimens.frame.Frame`): hinges at the ends of the joints' contact, bars
+    through the bodies between them, piers included (docs/physics/dynamics.md#3-the-four-bar-linkage).
+    Impacts swap every hinge to the other end of its joint. ``direction`` +1/-1 orients the
+    mechanism so that that sign of ground acceleration opens it (None: as found)."""
+    from analytic.limit_discrete import FACES, enumerate_mechanisms
+
+    # a positive ground acceleration loads the blocks along -x
+    kin = enumerate_mechanisms(structure, load_sign=-1 if direction == 1 else 1)
+    if not kin.joints:
+        raise ArchdemInputError(f"no admissible four-hinge mechanism found ({kin.message})")
+    joints = [structure.joints[q] for q in kin.joints]
+    others = [j.contact_points[1 - FACES.index(f)] for j, (_, f) in zip(joints, kin.hinges)]
+    fb = replace(four_bar(kin.hinge_points, kin.blocks, others, [j.normal for j in joints], name=name),
+                 joints=kin.hinges)
+    if direction is not None and fb.direction != direction:  # pragma: no cover - fixed by the load's sign
+        raise AssertionError(f"the discrete four-bar opens for {fb.direction:+d}, not {direction:+d}")
+    return fb
 
 
 # ---------------------------------------------------------------------------------------------

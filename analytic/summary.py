@@ -21,6 +21,8 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     kw = dict(disc_kw or {})
     density = kw.get("density", 500.0)
     contact = float(kw.get("contact", 1.0))
+    if kw.get("piers") is not None:
+        return _analyse_on_piers(arch, config, mu_joint, mu_base, kw)
     if continuous is not None:
         want = (float(effective_thickness), float(min_spacing), contact)
         have = (continuous.effective_thickness, continuous.min_spacing, continuous.contact)
@@ -57,6 +59,33 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
         "lambda_slide_two_bar": lambda_slide(arch, min(mu_joint, 1e6), density),
         "mu_star": mu_star(arch, cont.lam, density),
         "stands": bool(cont.stands and kin.stands and lp.stands),
+    }
+
+
+#: Why an arch on piers has no continuous or two-bar multiplier (both model the ring on a rigid base).
+RING_ONLY = "the continuous and two-bar analyses model the ring on a rigid base; on piers see the discrete and LP results"
+
+
+def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: dict) -> dict:
+    """:func:`analyse` of an arch on piers: the discrete enumeration and the LP, hinges named by joint."""
+    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+    from specimens.blocks import discretise
+
+    asm = discretise(arch, config=config, **kw)
+    kin = enumerate_mechanisms(asm)
+    lp = solve_lp(asm, mu_joint, mu_base)
+    return {
+        "arch": arch.describe(), "piers": asm.piers.describe(arch),
+        "config": config, "mu_joint": mu_joint, "mu_base": mu_base, "effective_thickness": 1.0,
+        "contact": asm.contact,
+        "lambda_continuous": None, "hinges_continuous": [], "continuous_converged": None,
+        "continuous_message": RING_ONLY, "warnings": [],
+        "lambda_discrete": kin.lam,
+        "hinges_discrete": [{"joint": j, "face": f, "in_pier": asm.joint(j).in_pier} for j, f in kin.hinges],
+        "lambda_lp": lp.lam, "lp_status": lp.message,
+        "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
+        "lambda_two_bar": None, "lambda_slide_two_bar": None, "mu_star": None,
+        "stands": bool(kin.stands and lp.stands),
     }
 
 

@@ -23,6 +23,7 @@ import numpy as np
 
 OUT = Path(__file__).resolve().parent / "results"
 ARCH = ["Sh02-Sd020"]
+PIER_OPTIONS = ["--pier-height", "--pier-width", "--pier-depth", "--pier-offset", "--pier-courses"]
 # (command, the valid rest of its command line, options to corrupt)
 COMMANDS = [
     ("mesh", ARCH + ["--out", "m"], ["--contact", "--width", "--voussoirs", "--density"]),
@@ -42,6 +43,10 @@ COMMANDS = [
     ("draw", ["--Sh", "0.6", "--Sd", "0.2", "--Rc", "0.2", "--out", "d.png"], ["--Sh", "--Sd", "--Rc", "--width"]),
     ("analytic", ["--Ri", "0.2", "--Re", "0.25", "--e", "0.1"], ["--Ri", "--Re", "--e", "--voussoirs"]),
     ("map", ["--specimens", "Sh02-Sd020"], ["--resume"]),
+    ("draw", ARCH + ["--out", "d.png", "--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
+    ("analytic", ARCH + ["--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
+    ("rock", ARCH + ["--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
+    ("tilt", ARCH + ["--out", "t", "--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
     ("campaign", ["--out", "c", "--specimens", "Sh02-Sd020"], ["--contact", "--workers", "--steps", "--specimens"]),
     ("compare-engines", ["--specimens", "Sh02-Sd020"], ["--dt", "--workers", "--engines", "--specimens"]),
 ]

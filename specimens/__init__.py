@@ -9,8 +9,9 @@ from specimens.catalogue import (
 )
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.piers import Piers
 
 __all__ = [
     "Assembly", "Block", "Body", "Joint", "discretise", "joint_angles", "CATALOGUE", "SPECIMEN_IDS",
-    "Specimen", "full_scale_set", "get_specimen", "ArchdemInputError", "PointedArch",
+    "Specimen", "full_scale_set", "get_specimen", "ArchdemInputError", "PointedArch", "Piers",
 ]

@@ -33,6 +33,7 @@ import numpy as np
 
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.piers import Piers
 from specimens.sections import (
     SectionProperties,
     is_convex,
@@ -76,6 +77,7 @@ class Body:
     section: SectionProperties
     mass: float
     inertia: np.ndarray
+    width: float  # out-of-plane depth of the prism [m]: the arch's, or the piers'
 
     @property
     def centroid(self) -> np.ndarray:
@@ -136,8 +138,13 @@ class Joint:
 
     @property
     def side(self) -> int:
-        """-1 for a joint on the left half, +1 on the right half."""
+        """-1 for a joint on the left half (or left pier), +1 on the right."""
         return -1 if self.name.startswith("L") else 1
+
+    @property
+    def in_pier(self) -> bool:
+        """True for a joint of a pier (``LPk``/``RPk``): horizontal, not a radial cut of the ring."""
+        return self.name[1:2] == "P"
 
 
 @dataclass(frozen=True)
@@ -157,6 +164,12 @@ class Assembly:
     joint_angles: np.ndarray = field(repr=False)
     contact: float = 1.0
     imperfect: bool = False  # per-joint contact bands (``discretise(bands=...)``) instead of ``contact``
+    piers: Piers | None = None
+
+    @property
+    def length_scale(self) -> float:
+        """A length of the structure [m] that scales the analyses' numerics (the arch's mean radius)."""
+        return float(self.arch.Rp)
 
     @property
     def n_bodies(self) -> int:
@@ -194,6 +207,7 @@ class Assembly:
             "crown_fraction": self.crown_fraction, "density": self.density, "segments": self.segments,
             "contact": self.contact,
             **({"bands": {j.name: list(j.band) for j in self.joints}} if self.imperfect else {}),
+            **({"piers": self.piers.describe(self.arch)} if self.piers is not None else {}),
         }
 
 
@@ -354,13 +368,16 @@ def discretise(
     segments: int = 4,
     contact: float = 1.0,
     bands: Mapping[str, tuple[float, float]] | None = None,
+    piers: Piers | None = None,
 ) -> Assembly:
     """Cut ``arch`` into ``n_voussoirs`` voussoirs per side plus a crown (docs/physics/geometry.md#4-discretisation).
 
     ``density`` in kg/m^3; ``segments`` = chords per voussoir for the curved shape; ``contact``:
     the central fraction of every joint's depth that touches (1 = the full joint); ``bands``:
     joint name -> ``(lo, hi)``, the touching part of that joint instead (fractions of its depth
-    from the intrados end), e.g. an imperfect realisation (:mod:`specimens.imperfection`).
+    from the intrados end), e.g. an imperfect realisation (:mod:`specimens.imperfection`);
+    ``piers``: the arch stands on two :class:`~specimens.piers.Piers` instead of the rigid base
+    (docs/physics/geometry.md#14-arches-on-piers).
     """
     if not isinstance(n_voussoirs, (int, np.integer)) or n_voussoirs < 1:
         raise ArchdemInputError(f"number of voussoirs per side must be an integer >= 1, got {n_voussoirs!r}")
@@ -378,6 +395,10 @@ def discretise(
         raise ArchdemInputError("the glued configuration needs at least 2 voussoirs per side")
     contact = check_contact(contact)
     bands = {str(k): check_band(v, str(k)) for k, v in (bands or {}).items()}
+    if piers is not None:
+        if not isinstance(piers, Piers):
+            raise ArchdemInputError(f"piers must be a specimens.piers.Piers, got {type(piers).__name__}")
+        piers.check(arch)
 
     psi = joint_angles(arch, n_voussoirs, crown_fraction)
     n = n_voussoirs
@@ -449,13 +470,70 @@ def discretise(
         if a != b:
             add(f"R{k}", a, b, +1, k)
 
+    if piers is not None:
+        blocks, bodies, joints = _on_piers(arch, piers, blocks, bodies, joints, density,
+                                           lambda name: bands.get(name, central_band(contact)))
     unknown = set(bands) - {j.name for j in joints}
     if unknown:
         raise ArchdemInputError(f"contact bands given for joints this assembly does not have: {sorted(unknown)}")
     if any(j.band != (0.0, 1.0) for j in joints):
         blocks, bodies = _relieved(blocks, bodies, joints)
     return Assembly(arch, config, shape, int(n_voussoirs), float(crown_fraction), float(density), int(segments),
-                    tuple(blocks), tuple(bodies), tuple(joints), psi, contact, bool(bands))
+                    tuple(blocks), tuple(bodies), tuple(joints), psi, contact, bool(bands), piers)
+
+
+def _on_piers(arch: PointedArch, piers: Piers, blocks: list[Block], bodies: list[Body], joints: list[Joint],
+              density: float, band_of) -> tuple[list[Block], list[Body], list[Joint]]:
+    """The ring's blocks, bodies and joints set on ``piers`` (docs/physics/geometry.md#14-arches-on-piers).
+
+    Bodies along the chain: left pier courses bottom to top (``LP1`` ... ``LPN``), the ring, right
+    pier courses top to bottom (``RPN`` ... ``RP1``); joints ``LP0`` (left pier base) ... ``LP(N-1)``,
+    the ring's (``L0``/``R0`` now on the pier tops), ``RP(N-1)`` ... ``RP0`` (right pier base). A
+    pier joint ``LPk``/``RPk`` is the bed joint on top of course k (k = 0: the ground); its
+    intrados end is on the pier's inner face, its normal points along the chain (up on the left).
+    """
+    N, nr = piers.courses, len(bodies)
+    xi = piers.inner_x(arch)
+    xo = xi + piers.width
+    ys = np.linspace(-piers.height, 0.0, N + 1)
+    depth = piers.depth_for(arch)
+
+    def course(side: int, k: int) -> tuple[Block, np.ndarray]:
+        x0, x1 = sorted((side * xi, side * xo))
+        outline = np.array([[x0, ys[k - 1]], [x1, ys[k - 1]], [x1, ys[k]], [x0, ys[k]]])
+        inner = np.array([[side * xi, ys[k - 1]], [side * xi, ys[k]]])
+        outer = np.array([[side * xo, ys[k - 1]], [side * xo, ys[k]]])
+        name = f"{'L' if side < 0 else 'R'}P{k}"
+        return Block(name, outline, (outline,), inner, outer), outline
+
+    left = [course(-1, k) for k in range(1, N + 1)]
+    right = [course(+1, k) for k in range(N, 0, -1)]
+
+    def pier_body(idx: int, blk: Block, outline: np.ndarray) -> Body:
+        return _make_body(idx, blk.name, (blk.name,), outline, (outline,), polygon_properties(outline), density, depth)
+
+    new_bodies = [pier_body(i, *left[i]) for i in range(N)]
+    new_bodies += [replace(b, index=b.index + N) for b in bodies]
+    new_bodies += [pier_body(N + nr + i, *right[i]) for i in range(N)]
+    left_top, right_top = N - 1, N + nr
+
+    def shift(j: Joint) -> Joint:
+        a = left_top if j.a < 0 and j.side < 0 else (right_top if j.a < 0 else j.a + N)
+        b = left_top if j.b < 0 and j.side < 0 else (right_top if j.b < 0 else j.b + N)
+        return replace(j, a=a, b=b)
+
+    def pier_joint(name: str, a: int, b: int, side: int, k: int) -> Joint:
+        p_i, p_e = np.array([side * xi, ys[k]]), np.array([side * xo, ys[k]])
+        return Joint(0, name, a, b, p_i, p_e, np.array([0.0, -float(side)]), 0.0, band_of(name))
+
+    new_joints = [pier_joint(f"LP{k}", k - 1 if k else -1, k, -1, k) for k in range(N)]
+    new_joints += [shift(j) for j in joints]
+    # right pier body of course k sits at N + nr + (N - k)
+    new_joints += [pier_joint(f"RP{k}", N + nr + N - k - 1, N + nr + N - k if k else -1, +1, k)
+                   for k in range(N - 1, -1, -1)]
+    new_joints = [replace(j, index=i) for i, j in enumerate(new_joints)]
+    new_blocks = [b for b, _ in left] + list(blocks) + [b for b, _ in right]
+    return new_blocks, new_bodies, new_joints
 
 
 def _relieved(blocks: list[Block], bodies: list[Body], joints: list[Joint]) -> tuple[list[Block], list[Body]]:
@@ -484,4 +562,4 @@ def _make_body(index, name, block_names, outline, pieces, sec: SectionProperties
     Izz = rho_w * sec.polar
     Ixy = -rho_w * sec.Ixy
     inertia = np.array([[Ixx, Ixy, 0.0], [Ixy, Iyy, 0.0], [0.0, 0.0, Izz]])
-    return Body(index, name, block_names, outline, pieces, sec, float(mass), inertia)
+    return Body(index, name, block_names, outline, pieces, sec, float(mass), inertia, float(width))

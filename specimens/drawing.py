@@ -34,20 +34,29 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
         if j.is_base:
             lab = (j.p_i + j.p_e) / 2 * 1000 + np.array([0.0, -0.25 * arch.t * 1000])
         ax.text(lab[0], lab[1], j.name, ha="center", va="center", fontsize=7, color=col)
-    base_x = (arch.Rc + arch.t) * 1000 * 1.15
-    ax.fill_between([-base_x, base_x], [-0.06 * arch.Rc * 1000] * 2, [0, 0], color="0.8", hatch="//", lw=0)
+    piers = assembly.piers
+    ground = -piers.height * 1000 if piers is not None else 0.0
+    base_x = max((arch.Rc + arch.t), piers.inner_x(arch) + piers.width if piers else 0.0) * 1000 * 1.15
+    ax.fill_between([-base_x, base_x], [ground - 0.06 * arch.Rc * 1000] * 2, [ground] * 2, color="0.8", hatch="//", lw=0)
+    if dimensions and piers is not None:
+        x = (piers.inner_x(arch) + piers.width + 1.3 * arch.t) * 1000  # clear of the joint labels
+        ax.annotate("", xy=(x, ground), xytext=(x, 0), arrowprops=dict(arrowstyle="<->", lw=0.8))
+        ax.text(x + 0.2 * arch.t * 1000, ground / 2, f"pier {piers.height * 1000:.0f} mm\n{piers.courses} course(s)", ha="left",
+                va="center", fontsize=8)
     if dimensions:
         span = arch.span * 1000
-        y = -0.12 * arch.Rc * 1000
+        y = ground - 0.12 * arch.Rc * 1000
         xi = (arch.Rc - arch.t / 2) * 1000
         ax.annotate("", xy=(-xi, y), xytext=(xi, y), arrowprops=dict(arrowstyle="<->", lw=0.8))
-        ax.text(0, y * 1.35, f"clear span {span:.0f} mm", ha="center", va="top", fontsize=8)
+        ax.text(0, y + 0.35 * (y - ground), f"clear span {span:.0f} mm", ha="center", va="top", fontsize=8)
         rise = arch.rise * 1000
         xr = -xi * 0.15
         ax.annotate("", xy=(xr, 0), xytext=(xr, rise), arrowprops=dict(arrowstyle="<->", lw=0.8))
         ax.text(xr - 5, rise / 2, f"rise {rise:.0f} mm", ha="right", va="center", fontsize=8, rotation=90)
         ax.text(0.02, 0.98, f"Ri = {arch.Ri*1000:.0f} mm, Re = {arch.Re*1000:.0f} mm\n"
                 f"e = {arch.e*1000:.0f} mm, t = {arch.t*1000:.0f} mm\n"
+                + (f"piers {piers.width*1000:.0f} x {piers.height*1000:.0f} x {piers.depth_for(arch)*1000:.0f} mm\n"
+                   if piers is not None else "") +
                 f"{assembly.config}, {assembly.n_bodies} bodies, {assembly.total_mass:.3f} kg",
                 transform=ax.transAxes, va="top", fontsize=8, family="monospace")
     ax.set_aspect("equal")

@@ -47,9 +47,8 @@ def body_pieces(body: Body, width: float, inflate: float = 0.0) -> list[trimesh.
 
 
 def assembly_meshes(assembly: Assembly, inflate: float = 0.0) -> list[list[trimesh.Trimesh]]:
-    """Per body, the list of its convex prisms."""
-    w = assembly.arch.width
-    return [body_pieces(b, w, inflate) for b in assembly.bodies]
+    """Per body, the list of its convex prisms (each body as deep as it is: ring or piers)."""
+    return [body_pieces(b, b.width, inflate) for b in assembly.bodies]
 
 
 def export_meshes(assembly: Assembly, out_dir: str | Path, fmt: MeshFormat = "stl") -> list[Path]:

@@ -18,6 +18,7 @@ from dem.campaign.step_analytic import step_analytic
 from dem.campaign.step_catalogue import step_catalogue
 from dem.campaign.step_lab import step_lab
 from dem.campaign.step_map import step_map
+from dem.campaign.step_piers import step_piers
 from dem.campaign.step_record import step_record
 from dem.campaign.step_shake import step_shake
 from dem.campaign.step_tilt import step_tilt
@@ -35,12 +36,20 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
     "map": (step_map, "friction threshold map (rocking / sliding)"),
     "shake": (step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar"),
     "record": (step_record, "recorded accelerogram scaled until collapse"),
+    "piers": (step_piers, "one arch on piers of growing height: limit analysis and DEM tilt"),
 }
+#: Steps run only when asked for (``--steps`` or ``archdem campaign --piers``).
+OPTIONAL_STEPS = ("piers",)
 
 
 def all_steps() -> dict[str, tuple[StepFunc, str]]:
     """Every campaign step in order."""
     return STEPS
+
+
+def default_steps() -> list[str]:
+    """The steps a campaign runs when none are named."""
+    return [s for s in STEPS if s not in OPTIONAL_STEPS]
 
 
 def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
@@ -78,7 +87,7 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
     manifest.setdefault("parameters", params)
     manifest.setdefault("steps", {})
     manifest["provenance"] = provenance()
-    for name in steps or list(STEPS):
+    for name in steps or default_steps():
         func, desc = STEPS[name]
         if name in manifest["steps"]:
             if _complete(out, name, manifest["steps"][name]["outputs"]):

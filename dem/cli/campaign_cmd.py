@@ -23,13 +23,18 @@ def _campaign(args: argparse.Namespace) -> int:
         unknown = [s for s in steps if s not in all_steps()]
         if unknown:
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(all_steps())}")
+    if args.piers:
+        from dem.campaign.runner import default_steps
+
+        steps = (steps or default_steps()) + ([] if steps and "piers" in steps else ["piers"])
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
                           quick=args.quick, workers=args.workers, contact=args.contact)
     t0 = time.perf_counter()
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
+    from dem.campaign.runner import default_steps
 
-    steps_run = steps or list(all_steps())
+    steps_run = steps or default_steps()
     if estimate(ctx, steps_run):  # simulator steps ahead: time this machine (about 1 s), then estimate
         speed = machine_speed(ctx.engine)
         est = estimate(ctx, steps_run, speed=speed)
@@ -67,6 +72,8 @@ def register(sub) -> None:
     add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
-    p.add_argument("--steps", default=None, help="comma-separated subset of steps")
+    p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers only when named or with --piers)")
+    p.add_argument("--piers", action="store_true",
+                   help="add the piers study: one arch on piers of growing height, limit analysis and DEM tilt")
     p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")
     p.set_defaults(func=_campaign)

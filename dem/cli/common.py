@@ -13,6 +13,7 @@ from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
 from specimens.io import can_make_dir, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
+from specimens.piers import MAX_COURSES, Piers
 
 #: Lengths an arch option takes [m] (a typo such as --Rc 1e30 is refused, not simulated).
 MIN_LENGTH_M, MAX_LENGTH_M = 1e-3, 1000.0
@@ -53,6 +54,18 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
                    help=f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})")
     g.add_argument("--density", type=float, default=None,
                    help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g})")
+    g = p.add_argument_group("piers (the arch on two equal piers instead of the rigid base; lengths in m)")
+    g.add_argument("--pier-height", type=float, default=None, metavar="H",
+                   help="pier height from the ground to the springing line")
+    g.add_argument("--pier-width", type=float, default=None, metavar="B",
+                   help="in-plane pier width, at least the ring thickness plus the offset")
+    g.add_argument("--pier-depth", type=float, default=None, metavar="D",
+                   help="out-of-plane pier depth (default: the arch's width)")
+    g.add_argument("--pier-offset", type=float, default=None, metavar="O",
+                   help="how far the pier's inner face stands inside the opening beyond the intrados springing "
+                        f"(default {default_of(Piers, 'offset'):g})")
+    g.add_argument("--pier-courses", type=int, default=None, metavar="N",
+                   help=f"courses per pier, 1 to {MAX_COURSES} (default {default_of(Piers, 'courses')})")
     p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
                    help="effective contact: every joint touches within its central fraction C of the depth, "
                         "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
@@ -61,7 +74,16 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
 
 
 def arch_from_args(args: argparse.Namespace):
-    """Return ``(label, PointedArch)`` from the id or the parameter options."""
+    """Return ``(label, PointedArch)`` from the id or the parameter options; the label names the
+    piers too when the ``--pier-*`` options set them."""
+    label, arch = _arch_from_args(args)
+    piers = piers_from_args(args)
+    if piers is None:
+        return label, arch
+    return f"{label}-piers-H{piers.height:g}-B{piers.width:g}" + (f"-N{piers.courses}" if piers.courses > 1 else ""), arch
+
+
+def _arch_from_args(args: argparse.Namespace):
     from specimens.catalogue import get_specimen
     from specimens.geometry import PointedArch
 
@@ -91,6 +113,26 @@ def arch_from_args(args: argparse.Namespace):
             raise ArchdemInputError(f"these parameters give a {what} of {v:.3g} m, below {MIN_LENGTH_M:g} m")
     label = f"Sh{arch.Sh:.3g}-Sd{arch.Sd:.3g}-Rc{arch.Rc:.3g}"
     return label, arch
+
+
+PIER_OPTIONS = ("pier_height", "pier_width", "pier_depth", "pier_offset", "pier_courses")
+
+
+def piers_from_args(args: argparse.Namespace) -> Piers | None:
+    """The :class:`~specimens.piers.Piers` of the ``--pier-*`` options (None without ``--pier-height``)."""
+    given = {k: getattr(args, k, None) for k in PIER_OPTIONS if getattr(args, k, None) is not None}
+    if not given:
+        return None
+    if "pier_height" not in given or "pier_width" not in given:
+        raise ArchdemInputError("piers need both --pier-height and --pier-width")
+    for k in ("pier_height", "pier_width", "pier_depth", "pier_offset"):
+        v = given.get(k)
+        lo = 0.0 if k == "pier_offset" else MIN_LENGTH_M
+        if v is not None and not (math.isfinite(v) and lo <= v <= MAX_LENGTH_M):
+            raise ArchdemInputError(f"--{k.replace('_', '-')} must be a length between {lo:g} and {MAX_LENGTH_M:g} m, "
+                                    f"got {v:g}")
+    return Piers(given["pier_height"], given["pier_width"], given.get("pier_depth"), given.get("pier_offset", 0.0),
+                 given.get("pier_courses", 1))
 
 
 #: Most local worker processes a command starts.
@@ -154,6 +196,11 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
         kw["density"] = args.density
     if getattr(args, "contact", None) is not None:
         kw["contact"] = resolve_contact(args.contact, arch)
+    piers = piers_from_args(args)
+    if piers is not None:
+        if arch is not None:
+            piers.check(arch)
+        kw["piers"] = piers
     return kw
 
 

@@ -9,7 +9,9 @@ from dem.cli.common import (
     arch_from_args,
     check_density,
     default_of,
+    discretisation_kwargs,
     parse_grid,
+    piers_from_args,
     print_json,
     resolve_contact,
     workers_option,
@@ -49,6 +51,8 @@ def build_mechanism(args: argparse.Namespace):
             raise ArchdemInputError("--block goes with --model block")
         if args.contact is not None:
             raise ArchdemInputError("--contact applies to the joints of an arch, not to --block")
+        if piers_from_args(args) is not None:
+            raise ArchdemInputError("--pier-* options set an arch on piers, not a --block")
         b, h = args.block
         width = args.width if args.width is not None else SPECIMEN_WIDTH
         return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
@@ -60,6 +64,9 @@ def build_mechanism(args: argparse.Namespace):
 
     from analytic import linkage
 
+    piers = piers_from_args(args)
+    if piers is not None or args.layout == "discrete":
+        return label, _discrete_four_bar(args, arch, model, density)
     contact = resolve_contact(args.contact, arch)
     if model == "two-bar":
         if contact != 1.0:
@@ -79,13 +86,29 @@ def build_mechanism(args: argparse.Namespace):
     return label, fb
 
 
+def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: float):
+    """The four-bar of the discrete minimum mechanism (the only linkage of an arch on piers)."""
+    from analytic.linkage import mechanism_four_bar
+    from specimens.blocks import discretise
+
+    if model != "four-bar":
+        raise ArchdemInputError("an arch on piers rocks as the four-bar of its discrete mechanism; use --model four-bar")
+    if args.layout not in ("minimised", "discrete"):
+        raise ArchdemInputError("on piers the four-bar's hinges are those of the discrete mechanism; use --layout discrete")
+    kw = discretisation_kwargs(args, arch)
+    kw["density"] = density
+    return mechanism_four_bar(discretise(arch, **kw), direction=1)
+
+
 def _add_common(p: argparse.ArgumentParser) -> None:
     add_arch_arguments(p)
     p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
                    help="rectangular block of half-width B and half-height H [m]")
     p.add_argument("--model", choices=("four-bar", "two-bar", "block"), default=None, help="linkage (default four-bar)")
     p.add_argument("--layout", default="minimised",
-                   help="four-bar hinge layout: minimised | oppenheim | 'b1,b2,b3,b4' (polar angles about O, rad)")
+                   help="four-bar hinge layout: minimised (continuous ring) | discrete (minimum mechanism of the "
+                        "voussoirs, piers included; the only one on piers) | oppenheim | 'b1,b2,b3,b4' "
+                        "(polar angles about O, rad)")
     p.add_argument("--input", choices=("sine", "sine0", "A", "B"), default="sine",
                    help="phased one-cycle sine (starts at the onset), plain one-cycle sine, pulse A or B")
     p.add_argument("--restitution", default="auto", help="'auto' (momentum balance) or an energy restitution in [0, 1]")
@@ -130,7 +153,8 @@ def _run_domain(args: argparse.Namespace) -> int:
 
         plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
     if args.json:
-        print_json({"restitution": e, "omega0": dom.omega0, "phi_cr": dom.phi_cr, "lambda": dom.lam,
+        hinges = {"hinges": mech.summary()["hinges"]} if "hinges" in mech.summary() else {}
+        print_json({"restitution": e, "omega0": dom.omega0, "phi_cr": dom.phi_cr, "lambda": dom.lam, **hinges,
                     "points": dom.points(), "bands": dom.bands()})
         return 0
     unit = "Hz" if dom.axis == "frequency" else "s"

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 
 from dem.cli.common import (
@@ -54,8 +55,11 @@ def _run(args: argparse.Namespace) -> int:
         raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
     if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
         raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
-    if args.resume and args.out:
+    if args.resume is not None and args.out:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
+    # a mistyped study name would otherwise start a whole new study under that name
+    if args.resume is not None and not os.path.exists(args.resume):
+        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
     if args.resume:
         path, resume = args.resume, True
     elif args.out:

@@ -106,22 +106,15 @@ class Model:
         raise KeyError(name)
 
 
-def _base_pads(xmin: float, xmax: float, depth: float, margin: float) -> np.ndarray:
-    return np.array([[xmin - margin, -depth], [xmax + margin, -depth], [xmax + margin, 0.0], [xmin - margin, 0.0]])
+def _base_pads(xmin: float, xmax: float, depth: float, margin: float, top: float = 0.0) -> np.ndarray:
+    return np.array([[xmin - margin, top - depth], [xmax + margin, top - depth], [xmax + margin, top],
+                     [xmin - margin, top]])
 
 
-def from_assembly(assembly, name: str | None = None, base_width_factor: float = 2.0) -> Model:
-    """Model of a :class:`specimens.blocks.Assembly` (glued or free, any block shape).
-
-    Bodies collide on the assembly's (possibly relieved) pieces with the full blocks' masses and
-    inertias. The base is two pads whose top faces are the springing line (y = 0), each reaching
-    one ring thickness beyond the springing joint, ``base_width_factor`` times the arch width
-    deep along z (so that out-of-plane motion never runs off the support).
-    """
-    arch = assembly.arch
-    w = float(arch.width)
+def _specs(assembly) -> tuple[tuple[BodySpec, ...], tuple[JointSpec, ...]]:
+    """Body and joint specs of anything with specimens' ``bodies`` and ``joints`` (an assembly, a frame)."""
     bodies = tuple(
-        BodySpec(b.name, tuple(np.asarray(p, float) for p in b.pieces), w, float(b.mass),
+        BodySpec(b.name, tuple(np.asarray(p, float) for p in b.pieces), float(b.width), float(b.mass),
                  np.array([b.centroid[0], b.centroid[1], 0.0]), np.asarray(b.inertia, float),
                  np.asarray(b.outline, float))
         for b in assembly.bodies
@@ -129,15 +122,45 @@ def from_assembly(assembly, name: str | None = None, base_width_factor: float = 
     # the detection reads each joint at the ends of its contact: where a hinge of a relieved joint turns
     joints = tuple(JointSpec(j.name, int(j.a), int(j.b), *(np.asarray(p, float) for p in j.contact_points),
                              np.asarray(j.normal, float)) for j in assembly.joints)
-    t = float(arch.t)
+    return bodies, joints
+
+
+def _base(assembly, margin: float, width: float) -> BaseSpec:
+    """Pads under the base joints: top faces at the joints' level, ``margin`` beyond each end and deep."""
     pads = []
     for j in assembly.joints:
         if j.is_base:
             xs = sorted([float(j.p_i[0]), float(j.p_e[0])])
-            pads.append(_base_pads(xs[0], xs[1], t, t))
+            pads.append(_base_pads(xs[0], xs[1], margin, margin, float(j.p_i[1])))
+    return BaseSpec(tuple(pads), width)
+
+
+def from_assembly(assembly, name: str | None = None, base_width_factor: float = 2.0) -> Model:
+    """Model of a :class:`specimens.blocks.Assembly` (glued or free, any block shape, on piers or not).
+
+    Bodies collide on the assembly's (possibly relieved) pieces with the full blocks' masses and
+    inertias. The base is two pads whose top faces are the base joints' level (the springing line,
+    or the piers' foot), each reaching one ring thickness beyond the base joint,
+    ``base_width_factor`` times the widest body deep along z (so that out-of-plane motion never
+    runs off the support).
+    """
+    arch = assembly.arch
+    bodies, joints = _specs(assembly)
+    t = float(arch.t)
+    base = _base(assembly, t, base_width_factor * max(b.width for b in bodies))
     crown = next(k for k, b in enumerate(assembly.bodies) if b.name == "C")
     src = {"kind": "arch", "arch": {k: float(v) for k, v in arch.describe().items()}, **assembly.parameters()}
-    return Model(name or "arch", bodies, joints, BaseSpec(tuple(pads), base_width_factor * w), t, crown, src, assembly)
+    return Model(name or "arch", bodies, joints, base, t, crown, src, assembly)
+
+
+def frame_model(frame, name: str = "frame", base_width_factor: float = 2.0) -> Model:
+    """Model of a :class:`specimens.frame.Frame` (lintel on two piers); the collapse criterion's
+    length is the piers' height, as a single block's is its height (a pier overturns once its top
+    has moved about its width: a shorter length would call a recoverable rocking a collapse)."""
+    bodies, joints = _specs(frame)
+    size = 2.0 * float(frame.h)
+    base = _base(frame, size, base_width_factor * max(b.width for b in bodies))
+    return Model(name, bodies, joints, base, size, 1, {"kind": "frame", **frame.parameters()}, frame)
 
 
 def as_model(target: Any, config: str = "glued", name: str | None = None, **discretise_kw) -> Model:

@@ -57,13 +57,14 @@ def _jsonable(v):
 
 def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_base: float,
               protocol: dict | None = None, settings: dict | None = None, n_voussoirs: int = 8,
-              time_scale: float | str = "auto", contact: float = 1.0) -> dict:
+              time_scale: float | str = "auto", contact: float = 1.0, piers=None) -> dict:
     """One tilt case (a JSON-serialisable dict; its key identifies it in the study file).
 
     ``protocol`` / ``settings``: overrides of :class:`dem.experiments.tilt.TiltProtocol` /
     :class:`dem.core.settings.Settings` fields at the catalogue scale; the time scale is applied
     by the case function. ``contact``: the effective contact of the joints (written only when
-    below 1, so full-contact cases keep their keys).
+    below 1, so full-contact cases keep their keys); ``piers``: the arch stands on these
+    :class:`~specimens.piers.Piers` (written only when given).
     """
     from dem.experiments.tilt import TiltProtocol
     from specimens.blocks import check_contact
@@ -84,6 +85,7 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
         "settings": dict(settings or {}),
         "time_scale": time_scale_of(arch, time_scale),
         **({} if check_contact(contact) == 1.0 else {"contact": float(contact)}),
+        **({} if piers is None else {"piers": piers.describe()}),
     }
 
 
@@ -112,10 +114,12 @@ def _case_setup(case: dict):
     """Assembly, model, settings and protocol of a DEM tilt case."""
     from dem.core.model import from_assembly
     from specimens.blocks import discretise
+    from specimens.piers import Piers
 
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"],
                      contact=float(case.get("contact", 1.0)),
-                     bands={k: tuple(v) for k, v in case["bands"].items()} if case.get("bands") else None)
+                     bands={k: tuple(v) for k, v in case["bands"].items()} if case.get("bands") else None,
+                     piers=Piers(**case["piers"]) if case.get("piers") else None)
     settings = scaled_settings(case)
     proto = scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
     return asm, from_assembly(asm, name=case["label"]), settings, proto

@@ -67,6 +67,26 @@ from dem.cli import main
     (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--scheduler", "garbage"], "address is tcp://HOST:PORT"),
     (["draw", "Sh02-Sd020", "--voussoirs", "100000", "--out", "v.png"], "--voussoirs must be 1 to 100"),
     (["map", "--specimens", "Sh02-Sd020", "--resume", "old.png"], "not a readable HDF5 study file"),
+    (["map", "--specimens", "Sh02-Sd020", "--resume", "typo.h5"], "no such study file; start a new study with --out"),
+    (["map", "--specimens", "Sh02-Sd020", "--resume", ""], "no such study file"),
+    # piers
+    (["draw", "Sh02-Sd020", "--out", "p.png", "--pier-height", "-0.2", "--pier-width", "0.1"], "--pier-height must be a length"),
+    (["tilt", "Sh02-Sd020", "--out", "t", "--pier-height", "nan", "--pier-width", "0.1"], "--pier-height must be a length"),
+    (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.01"], "narrower than the ring's springing"),
+    (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "0.3", "--pier-height", "0.2"], "need both --pier-height and --pier-width"),
+    (["mesh", "Sh02-Sd020", "--out", "m", "--pier-width", "0.1"], "need both --pier-height and --pier-width"),
+    (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1",
+      "--pier-courses", "0"], "pier courses must be a whole number from 1 to 50"),
+    (["threshold", "Sh02-Sd020", "--sine", "4", "--pier-height", "0.2", "--pier-width", "0.1", "--pier-offset", "inf"],
+     "--pier-offset must be a length"),
+    (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.1", "--pier-depth", "0"], "--pier-depth must be a length"),
+    (["rock", "--block", "0.1", "0.4", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1"],
+     "not a --block"),
+    (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1",
+      "--layout", "oppenheim"], "use --layout discrete"),
+    (["domain", "Sh02-Sd020", "--engine", "dem", "--pier-height", "0.2", "--pier-width", "0.1"], "not available yet"),
+    (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.1", "--effective-thickness", "0.8"],
+     "use --contact"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
     monkeypatch.chdir(tmp_path)
@@ -123,7 +143,9 @@ _ARCH = st.one_of(
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(arch=_ARCH, extra=st.fixed_dictionaries({}, optional={
     "width": st.one_of(st.floats(0.001, 2), _NUMBER), "density": st.one_of(st.floats(1, 1e4), _NUMBER),
-    "voussoirs": st.integers(-5, 200)}))
+    "voussoirs": st.integers(-5, 200), "pier-height": st.one_of(st.floats(0.001, 2), _NUMBER),
+    "pier-width": st.one_of(st.floats(0.001, 2), _NUMBER), "pier-offset": st.one_of(st.floats(0, 0.5), _NUMBER),
+    "pier-courses": st.integers(-2, 60)}))
 def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
     """The arch options as a command parses them, with any numbers: either an assembly whose every
     body has a finite positive mass and finite geometry, or an input error of one line."""
@@ -152,3 +174,5 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
     for b in asm.bodies:
         assert math.isfinite(b.mass) and b.mass > 0 and np.all(np.isfinite(b.inertia))
         assert np.all(np.isfinite(b.centroid)) and all(np.all(np.isfinite(q)) for q in b.pieces)
+    if asm.piers is not None:  # the piers carry the whole springing joint and stand on the ground
+        assert asm.piers.width >= a.t * (1 - 1e-9) and [j.name for j in asm.joints if j.is_base] == ["LP0", "RP0"]
