@@ -62,30 +62,38 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     }
 
 
-#: Why an arch on piers has no continuous or two-bar multiplier (both model the ring on a rigid base).
-RING_ONLY = "the continuous and two-bar analyses model the ring on a rigid base; on piers see the discrete and LP results"
+#: Why an arch on piers has no two-bar multiplier (it models the ring on a rigid base).
+RING_ONLY = "the two-bar sliding model is of the ring on a rigid base"
 
 
 def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: dict) -> dict:
-    """:func:`analyse` of an arch on piers: the discrete enumeration and the LP, hinges named by joint."""
+    """:func:`analyse` of an arch on piers: hinges anywhere (the fine LP of
+    :func:`analytic.limit_piers.continuous_on_piers`), the discrete enumeration and the LP, hinges
+    named by joint."""
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.limit_piers import continuous_on_piers
     from specimens.blocks import discretise
 
     asm = discretise(arch, config=config, **kw)
     kin = enumerate_mechanisms(asm)
     lp = solve_lp(asm, mu_joint, mu_base)
+    cont = continuous_on_piers(arch, asm.piers, density=asm.density, contact=asm.contact)
+    converged = abs(cont.lam - cont.lam_half) <= 1e-3 * abs(cont.lam)
     return {
         "arch": arch.describe(), "piers": asm.piers.describe(arch),
         "config": config, "mu_joint": mu_joint, "mu_base": mu_base, "effective_thickness": 1.0,
         "contact": asm.contact,
-        "lambda_continuous": None, "hinges_continuous": [], "continuous_converged": None,
-        "continuous_message": RING_ONLY, "warnings": [],
+        "lambda_continuous": cont.lam, "hinges_continuous": list(cont.hinges), "continuous_converged": converged,
+        "continuous_message": f"hinges anywhere: LP with no sliding on the ring in {cont.n_ring} voussoirs per side and "
+                              f"the piers in {cont.pier_courses} courses (halved: lambda {cont.lam_half:.5f})",
+        "warnings": [] if converged else [f"the fine cut has not converged: lambda {cont.lam:.5f}, "
+                                          f"{cont.lam_half:.5f} on the halved cut"],
         "lambda_discrete": kin.lam,
         "hinges_discrete": [{"joint": j, "face": f, "in_pier": asm.joint(j).in_pier} for j, f in kin.hinges],
         "lambda_lp": lp.lam, "lp_status": lp.message,
         "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
-        "lambda_two_bar": None, "lambda_slide_two_bar": None, "mu_star": None,
-        "stands": bool(kin.stands and lp.stands),
+        "lambda_two_bar": None, "lambda_slide_two_bar": None, "mu_star": None, "two_bar_message": RING_ONLY,
+        "stands": bool(cont.stands and kin.stands and lp.stands),
     }
 
 

@@ -23,7 +23,7 @@ import numpy as np
 
 OUT = Path(__file__).resolve().parent / "results"
 ARCH = ["Sh02-Sd020"]
-PIER_OPTIONS = ["--pier-height", "--pier-width", "--pier-depth", "--pier-offset", "--pier-courses"]
+PIER_OPTIONS = ["--pier-height", "--pier-width", "--pier-depth", "--pier-offset", "--pier-courses", "--pier-load"]
 # (command, the valid rest of its command line, options to corrupt)
 COMMANDS = [
     ("mesh", ARCH + ["--out", "m"], ["--contact", "--width", "--voussoirs", "--density"]),

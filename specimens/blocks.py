@@ -31,6 +31,7 @@ from typing import Literal, Mapping
 
 import numpy as np
 
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
@@ -78,10 +79,12 @@ class Body:
     mass: float
     inertia: np.ndarray
     width: float  # out-of-plane depth of the prism [m]: the arch's, or the piers'
+    com: np.ndarray | None = None  # centre of mass [m] when a carried load moves it off the section's centroid
 
     @property
     def centroid(self) -> np.ndarray:
-        return self.section.centroid
+        """Centre of mass [m] (the outline's centroid unless the body carries a load)."""
+        return self.section.centroid if self.com is None else self.com
 
     @property
     def area(self) -> float:
@@ -510,7 +513,11 @@ def _on_piers(arch: PointedArch, piers: Piers, blocks: list[Block], bodies: list
     right = [course(+1, k) for k in range(N, 0, -1)]
 
     def pier_body(idx: int, blk: Block, outline: np.ndarray) -> Body:
-        return _make_body(idx, blk.name, (blk.name,), outline, (outline,), polygon_properties(outline), density, depth)
+        body = _make_body(idx, blk.name, (blk.name,), outline, (outline,), polygon_properties(outline), density, depth)
+        if piers.load and blk.name[2:] == str(N):  # the top course carries the load at its top's centre
+            side = -1.0 if blk.name[0] == "L" else 1.0
+            body = _with_point_mass(body, piers.load / G, np.array([side * (xi + xo) / 2, 0.0]))
+        return body
 
     new_bodies = [pier_body(i, *left[i]) for i in range(N)]
     new_bodies += [replace(b, index=b.index + N) for b in bodies]
@@ -551,6 +558,20 @@ def _relieved(blocks: list[Block], bodies: list[Body], joints: list[Joint]) -> t
     by_name = {b.name: b for b in new_blocks}
     new_bodies = [replace(b, pieces=tuple(p for m in b.blocks for p in by_name[m].pieces)) for b in bodies]
     return new_blocks, new_bodies
+
+
+def _with_point_mass(body: Body, m: float, p: np.ndarray) -> Body:
+    """``body`` carrying a point mass ``m`` [kg] at ``p`` [m] (z = 0): mass, centre of mass and
+    inertia about it by the parallel-axis theorem."""
+    M = body.mass + m
+    c = (body.mass * body.centroid + m * p) / M
+
+    def shift(mass: float, d: np.ndarray) -> np.ndarray:
+        d3 = np.array([d[0], d[1], 0.0])
+        return mass * (float(d3 @ d3) * np.eye(3) - np.outer(d3, d3))
+
+    inertia = body.inertia + shift(body.mass, body.centroid - c) + shift(m, p - c)
+    return replace(body, mass=float(M), inertia=inertia, com=c)
 
 
 def _make_body(index, name, block_names, outline, pieces, sec: SectionProperties, density: float, width: float) -> Body:

@@ -55,7 +55,8 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
         ax.text(xr - 5, rise / 2, f"rise {rise:.0f} mm", ha="right", va="center", fontsize=8, rotation=90)
         ax.text(0.02, 0.98, f"Ri = {arch.Ri*1000:.0f} mm, Re = {arch.Re*1000:.0f} mm\n"
                 f"e = {arch.e*1000:.0f} mm, t = {arch.t*1000:.0f} mm\n"
-                + (f"piers {piers.width*1000:.0f} x {piers.height*1000:.0f} x {piers.depth_for(arch)*1000:.0f} mm\n"
+                + (f"piers {piers.width*1000:.0f} x {piers.height*1000:.0f} x {piers.depth_for(arch)*1000:.0f} mm"
+                   + (f", {piers.load / 1e3:g} kN on each" if piers.load else "") + "\n"
                    if piers is not None else "") +
                 f"{assembly.config}, {assembly.n_bodies} bodies, {assembly.total_mass:.3f} kg",
                 transform=ax.transAxes, va="top", fontsize=8, family="monospace")

@@ -30,13 +30,16 @@ def _length(name: str, value, allow_zero: bool = False) -> float:
 class Piers:
     """Two equal piers [m]: ``height`` from the ground to the springing line, in-plane ``width``,
     out-of-plane ``depth`` (None: the arch's width), ``offset`` of the pier's inner face into the
-    opening beyond the intrados springing (>= 0), ``courses`` equal courses per pier."""
+    opening beyond the intrados springing (>= 0), ``courses`` equal courses per pier; ``load``:
+    superimposed load on each pier [N], e.g. the masonry above, carried as mass at the centre
+    of the pier's top (weight and inertia)."""
 
     height: float
     width: float
     depth: float | None = None
     offset: float = 0.0
     courses: int = 1
+    load: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "height", _length("height", self.height))
@@ -44,6 +47,13 @@ class Piers:
         if self.depth is not None:
             object.__setattr__(self, "depth", _length("depth", self.depth))
         object.__setattr__(self, "offset", _length("offset", self.offset, allow_zero=True))
+        try:
+            load = float(self.load)
+        except (TypeError, ValueError):
+            raise ArchdemInputError(f"pier load must be a force in N, got {self.load!r}") from None
+        if not (math.isfinite(load) and load >= 0):
+            raise ArchdemInputError(f"pier load must be a finite force >= 0 N, got {self.load!r}")
+        object.__setattr__(self, "load", load)
         if isinstance(self.courses, bool) or not isinstance(self.courses, int) or not 1 <= self.courses <= MAX_COURSES:
             raise ArchdemInputError(f"pier courses must be a whole number from 1 to {MAX_COURSES}, got {self.courses!r}")
 
@@ -70,4 +80,4 @@ class Piers:
         """The pier parameters, for result files (``depth`` resolved when ``arch`` is given)."""
         depth = self.depth_for(arch) if arch is not None else self.depth
         return {"height": self.height, "width": self.width, "depth": depth, "offset": self.offset,
-                "courses": self.courses}
+                "courses": self.courses, **({"load": self.load} if self.load else {})}

@@ -68,8 +68,9 @@ def run(args: argparse.Namespace) -> int:
     if not (0.05 <= args.effective_thickness <= 1):
         raise ArchdemInputError(f"--effective-thickness must be in [0.05, 1], got {args.effective_thickness}")
     disc_kw = discretisation_kwargs(args, arch)
-    if "piers" in disc_kw and args.effective_thickness != 1.0:
-        raise ArchdemInputError("--effective-thickness applies to the continuous ring, which has no piers; use --contact")
+    if "piers" in disc_kw and (args.effective_thickness != 1.0 or args.min_spacing != 0.0):
+        raise ArchdemInputError("--effective-thickness and --min-spacing apply to the ring on a rigid base; on piers "
+                                "use --contact")
     res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.min_spacing, disc_kw)
     res["id"] = label
     res = {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}
@@ -80,20 +81,22 @@ def run(args: argparse.Namespace) -> int:
     print(f"{label}  (config {args.config}, mu_joint {mu_j:g}, mu_base {mu_b:g})"
           + (f"  on piers {res['piers']['height']:g} m high, {res['piers']['width']:g} m wide, "
              f"{res['piers']['courses']} course(s)" if on_piers else ""))
+    hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} {h['face'][:3]}" if "half" in h else
+                   f"{h['pier'][0].upper()}P h={h['height_m']:.3f} m {h['face'][:3]}" for h in res["hinges_continuous"])
+    print(f"  continuous   lambda = {res['lambda_continuous']:.4f}   hinges: {hc}")
     if on_piers:
-        print(f"  ({res['continuous_message']})")
-    else:
-        hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} {h['face'][:3]}" for h in res["hinges_continuous"])
-        print(f"  continuous   lambda = {res['lambda_continuous']:.4f}   hinges: {hc}")
+        print(f"    ({res['continuous_message']})")
     hd = ", ".join(f"{h['joint']} {h['face'][:3]}" for h in res["hinges_discrete"])
     print(f"  discrete     lambda = {res['lambda_discrete']:.4f}   hinges: {hd}")
     act = ", ".join(f"{k} {v['state']}" for k, v in res["joints_lp"].items() if v["state"] != "closed")
     print(f"  LP (friction) lambda = {res['lambda_lp'] if res['lambda_lp'] is None else round(res['lambda_lp'], 4)}   {act}   [{res['lp_status']}]")
-    if not on_piers:
+    if on_piers:
+        print(f"  two-bar      ({res['two_bar_message']})")
+    else:
         print(f"  two-bar      lambda = {res['lambda_two_bar']:.4f}   mu* = {res['mu_star']:.3f}")
     for w in res["warnings"]:
         print(f"  warning: {w}")
     if not res["stands"]:
         print("  the arch cannot stand under self-weight")
-    lam = res["lambda_discrete"] if on_piers else res["lambda_continuous"]
+    lam = res["lambda_continuous"]
     return 0 if lam is not None and math.isfinite(lam) else 1

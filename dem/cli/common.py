@@ -66,6 +66,9 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
                         f"(default {default_of(Piers, 'offset'):g})")
     g.add_argument("--pier-courses", type=int, default=None, metavar="N",
                    help=f"courses per pier, 1 to {MAX_COURSES} (default {default_of(Piers, 'courses')})")
+    g.add_argument("--pier-load", type=float, default=None, metavar="KN",
+                   help=f"superimposed load on each pier [kN], 0 to {MAX_PIER_LOAD_KN:g}, e.g. the masonry above: "
+                        "carried as mass at the centre of the pier's top (default 0)")
     p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
                    help="effective contact: every joint touches within its central fraction C of the depth, "
                         "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
@@ -80,7 +83,8 @@ def arch_from_args(args: argparse.Namespace):
     piers = piers_from_args(args)
     if piers is None:
         return label, arch
-    return f"{label}-piers-H{piers.height:g}-B{piers.width:g}" + (f"-N{piers.courses}" if piers.courses > 1 else ""), arch
+    return (f"{label}-piers-H{piers.height:g}-B{piers.width:g}" + (f"-N{piers.courses}" if piers.courses > 1 else "")
+            + (f"-P{piers.load / 1e3:g}kN" if piers.load else "")), arch
 
 
 def _arch_from_args(args: argparse.Namespace):
@@ -115,7 +119,9 @@ def _arch_from_args(args: argparse.Namespace):
     return label, arch
 
 
-PIER_OPTIONS = ("pier_height", "pier_width", "pier_depth", "pier_offset", "pier_courses")
+PIER_OPTIONS = ("pier_height", "pier_width", "pier_depth", "pier_offset", "pier_courses", "pier_load")
+#: Largest superimposed load on a pier [kN] (a 50 m column of masonry 3 m square is about 10^4 kN).
+MAX_PIER_LOAD_KN = 1e6
 
 
 def piers_from_args(args: argparse.Namespace) -> Piers | None:
@@ -131,8 +137,11 @@ def piers_from_args(args: argparse.Namespace) -> Piers | None:
         if v is not None and not (math.isfinite(v) and lo <= v <= MAX_LENGTH_M):
             raise ArchdemInputError(f"--{k.replace('_', '-')} must be a length between {lo:g} and {MAX_LENGTH_M:g} m, "
                                     f"got {v:g}")
+    load = given.get("pier_load", 0.0)
+    if not (math.isfinite(load) and 0 <= load <= MAX_PIER_LOAD_KN):
+        raise ArchdemInputError(f"--pier-load must be a force between 0 and {MAX_PIER_LOAD_KN:g} kN, got {load:g}")
     return Piers(given["pier_height"], given["pier_width"], given.get("pier_depth"), given.get("pier_offset", 0.0),
-                 given.get("pier_courses", 1))
+                 given.get("pier_courses", 1), load * 1e3)
 
 
 #: Most local worker processes a command starts.

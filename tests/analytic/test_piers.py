@@ -88,3 +88,30 @@ def test_taller_piers_lower_lambda_and_take_the_hinges():
     assert all(b <= a + 1e-12 for a, b in zip(lams, lams[1:])) and lams[-1] < 0.8 * lams[0]
     assert lams[1] == pytest.approx(lams[0], rel=1e-12)  # short stout piers: the ring's own mechanism
     assert not any(j.startswith(("LP", "RP")) for j in hinges[0]) and "RP0" in hinges[-1]
+
+
+def test_a_heavy_pier_load_leaves_the_pier_rocking_under_its_top_mass():
+    """With loads far above the weights, the loaded pier rocks on its outer foot with the load at
+    its top's centre: lambda = (B / 2) / H."""
+    height, width = 0.4, 3 * ARCH.t
+    lams = [solve_lp(discretise(ARCH, piers=Piers(height, width, courses=4, load=p)), math.inf, math.inf).lam
+            for p in (0.0, 20.0, 1e7)]
+    assert lams[0] > lams[1] > lams[2]  # the load's inertia overturns the pier (masonry above, not a prestress)
+    assert lams[2] == pytest.approx(width / 2 / height, rel=1e-5)
+
+
+def test_hinges_anywhere_on_piers():
+    """The fine LP finds the continuous ring's own multiplier on short stout piers, and on tall piers
+    a multiplier below the voussoirs' with the last hinge at the pier's foot; halving the cut moves it
+    by less than 0.1 %."""
+    from analytic.limit_continuous import continuous_collapse
+    from analytic.limit_piers import continuous_on_piers
+
+    short = continuous_on_piers(ARCH, Piers(0.1, 3 * ARCH.t, courses=2))
+    assert short.lam == pytest.approx(continuous_collapse(ARCH).lam, rel=1e-4)
+    assert not any("pier" in h for h in short.hinges) and short.pier_courses % 2 == 0
+    tall_piers = Piers(0.54, 3 * ARCH.t, courses=4)
+    tall = continuous_on_piers(ARCH, tall_piers)
+    assert tall.lam <= enumerate_mechanisms(discretise(ARCH, piers=tall_piers)).lam
+    assert abs(tall.lam / tall.lam_half - 1) < 1e-3
+    assert tall.hinges[-1] == {"joint": "RP0", "face": "extrados", "pier": "right", "height_m": 0.0}

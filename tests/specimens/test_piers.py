@@ -56,6 +56,26 @@ def test_pier_courses_have_the_mass_of_their_prism(on_piers):
     assert on_piers.parameters()["piers"] == {"height": 0.3, "width": 0.1, "depth": 0.15, "offset": 0.01, "courses": 3}
 
 
+def test_a_pier_load_is_mass_at_the_top_of_the_pier():
+    bare = discretise(ARCH, piers=Piers(0.3, 0.1, courses=3))
+    loaded = discretise(ARCH, piers=Piers(0.3, 0.1, courses=3, load=19.62))
+    top, top0 = loaded.body("RP3"), bare.body("RP3")
+    m = 19.62 / 9.81
+    p = np.array([ARCH.Ri - ARCH.e + 0.05, 0.0])  # the centre of the pier's top
+    assert top.mass == pytest.approx(top0.mass + m)
+    assert top.centroid == pytest.approx((top0.mass * top0.centroid + m * p) / top.mass)
+    # in-plane inertia about the new centre of mass: parallel axes of the course and the point mass
+    d0, dp = top0.centroid - top.centroid, p - top.centroid
+    assert top.I_z == pytest.approx(top0.I_z + top0.mass * d0 @ d0 + m * dp @ dp)
+    assert np.allclose(top.inertia, top.inertia.T) and np.all(np.linalg.eigvalsh(top.inertia) > 0)
+    assert loaded.body("RP2").mass == bare.body("RP2").mass and loaded.body("LP3").mass == top.mass
+    assert loaded.parameters()["piers"]["load"] == 19.62 and "load" not in bare.parameters()["piers"]
+    with pytest.raises(ArchdemInputError, match="pier load must be a finite force >= 0 N"):
+        Piers(0.3, 0.1, load=-1)
+    with pytest.raises(ArchdemInputError, match="pier load must be a finite force"):
+        Piers(0.3, 0.1, load=float("nan"))
+
+
 def test_meshes_take_each_body_depth(on_piers):
     meshes = assembly_meshes(on_piers)
     z = [np.ptp(m.vertices[:, 2]) for pieces in meshes for m in pieces]

@@ -80,6 +80,8 @@ from dem.cli import main
     (["threshold", "Sh02-Sd020", "--sine", "4", "--pier-height", "0.2", "--pier-width", "0.1", "--pier-offset", "inf"],
      "--pier-offset must be a length"),
     (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.1", "--pier-depth", "0"], "--pier-depth must be a length"),
+    (["tilt", "Sh02-Sd020", "--out", "t", "--pier-height", "0.2", "--pier-width", "0.1", "--pier-load", "-1"],
+     "--pier-load must be a force between 0 and"),
     (["rock", "--block", "0.1", "0.4", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1"],
      "not a --block"),
     (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1",
@@ -145,7 +147,7 @@ _ARCH = st.one_of(
     "width": st.one_of(st.floats(0.001, 2), _NUMBER), "density": st.one_of(st.floats(1, 1e4), _NUMBER),
     "voussoirs": st.integers(-5, 200), "pier-height": st.one_of(st.floats(0.001, 2), _NUMBER),
     "pier-width": st.one_of(st.floats(0.001, 2), _NUMBER), "pier-offset": st.one_of(st.floats(0, 0.5), _NUMBER),
-    "pier-courses": st.integers(-2, 60)}))
+    "pier-courses": st.integers(-2, 60), "pier-load": st.one_of(st.floats(0, 1e3), _NUMBER)}))
 def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
     """The arch options as a command parses them, with any numbers: either an assembly whose every
     body has a finite positive mass and finite geometry, or an input error of one line."""
