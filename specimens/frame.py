@@ -38,14 +38,6 @@ class Frame:
         return 2.0 * self.h
 
     @property
-    def n_bodies(self) -> int:
-        return len(self.bodies)
-
-    @property
-    def total_mass(self) -> float:
-        return float(sum(b.mass for b in self.bodies))
-
-    @property
     def gamma(self) -> float:
         """Lintel mass over the two piers' mass (the frame's mass ratio)."""
         return self.bodies[1].mass / (self.bodies[0].mass + self.bodies[2].mass)

@@ -60,3 +60,13 @@ def outlived(kids: list[int], grace: float = 10.0) -> list[int]:
     while time.monotonic() - t0 < grace and any(alive(k) for k in kids):
         time.sleep(0.2)
     return [k for k in kids if alive(k)]
+
+
+def kill_once_stored(args: list[str], study: Path, workers: int) -> list[int]:
+    """Run the command ``args``, SIGKILL it once a case is stored in ``study``; its workers' pids."""
+    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        return kill_when(p, lambda: len(stored_ok(study)) >= 1, workers=workers)
+    finally:
+        if p.poll() is None:
+            p.kill()

@@ -33,9 +33,6 @@ def dem_domain(args: argparse.Namespace) -> int:
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, arch = arch_from_args(args)
-    if piers_from_args(args) is not None:
-        raise ArchdemInputError("the DEM failure domain of an arch on piers is not available yet; "
-                                "use archdem threshold per frequency")
     dem_a_max = default_of(dem_failure_domain, "a_max_ratio")
     a_max = getattr(args, "amax", dem_a_max)
     # the analytic default (failure_domain's a_max_ratio) is too costly here: the DEM's own default instead
@@ -48,7 +45,8 @@ def dem_domain(args: argparse.Namespace) -> int:
 
         density = getattr(args, "density", None) or DEFAULT_DENSITY
         contact = discretisation_kwargs(args, arch).get("contact", 1.0)
-        plot_domain_over_analytic(res, analytic_domains(arch, freqs, density, contact=contact), args.plot,
+        plot_domain_over_analytic(res, analytic_domains(arch, freqs, density, contact=contact,
+                                                        piers=piers_from_args(args)), args.plot,
                                   title=f"{label}: DEM vs rocking linkages, one-cycle sine")
         res["plot"] = str(args.plot)
     if args.json:

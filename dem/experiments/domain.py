@@ -38,17 +38,23 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
 
 
 def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, workers: int | None = 1,
-                     contact: float = 1.0) -> dict:
+                     contact: float = 1.0, piers=None) -> dict:
     """Four-bar (minimised layout) and two-bar analytic domains of ``arch`` for the plain sine
     (``sine0``, the DEM input) at ``freqs``: name -> :class:`analytic.domain.FailureDomain`.
-    With an effective ``contact`` < 1 only the four-bar (the two-bar does not model it)."""
+    With an effective ``contact`` < 1 only the four-bar (the two-bar does not model it); on
+    ``piers`` only the four-bar of the discrete mechanism through them."""
     from analytic import linkage
     from analytic.domain import failure_domain
 
     out = {}
-    fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch, density, contact), density, direction=1)
+    if piers is not None:
+        from specimens.blocks import discretise
+
+        fb = linkage.mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers), direction=1)
+    else:
+        fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch, density, contact), density, direction=1)
     out["four-bar"] = failure_domain(fb, "sine0", freqs, a_max_ratio=10.0, n_scan=24, tol=1e-3, workers=workers)
-    if contact != 1.0:
+    if contact != 1.0 or piers is not None:
         return out
     try:
         tb = linkage.arch_two_bar(arch, density, direction=1)

@@ -69,7 +69,7 @@ def test_frame_overturning_amplitude_matches_the_equivalent_block(freq):
 ARCH = get_specimen("Sh06-Sd015").arch
 
 
-@pytest.mark.parametrize("piers", [Piers(0.1, 0.1), Piers(0.2, 0.08, courses=2), Piers(0.35, 0.1, offset=0.01, courses=4)])
+@pytest.mark.parametrize("piers", [Piers(0.1, 0.1), Piers(0.2, 0.08, courses=2), Piers(0.35, 0.1, offset=0.01, courses=4, load=10.0)])
 def test_lp_without_sliding_is_the_enumeration_on_piers(piers):
     asm = discretise(ARCH, piers=piers)
     kin, lp = enumerate_mechanisms(asm), solve_lp(asm, math.inf, math.inf)

@@ -3,7 +3,7 @@ and its study resumes with nothing lost or repeated."""
 import subprocess
 import sys
 
-from tests.kill import kill_when, outlived, stored_ok
+from tests.kill import kill_once_stored, outlived, stored_ok
 
 
 def test_a_sigkilled_map_leaves_no_worker_and_resumes(tmp_path):
@@ -12,12 +12,7 @@ def test_a_sigkilled_map_leaves_no_worker_and_resumes(tmp_path):
     study = tmp_path / "m.h5"
     args = [sys.executable, "-m", "dem.cli", "map", "--specimens", "Sh02-Sd020", "--mu", "0.3,0.5,0.7,0.9",
             "--refine", "0", "--workers", "2"]
-    p = subprocess.Popen(args + ["--out", str(study)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        kids = kill_when(p, lambda: len(stored_ok(study)) >= 1, workers=2)
-    finally:
-        if p.poll() is None:
-            p.kill()
+    kids = kill_once_stored(args + ["--out", str(study)], study, workers=2)
     assert not outlived(kids), "workers still running 10 s after the kill"
     before = stored_ok(study)
     assert 1 <= len(before) < 4

@@ -126,18 +126,13 @@ def test_a_sigkilled_campaign_leaves_no_worker_and_resumes(tmp_path):
     import subprocess
     import sys
 
-    from tests.kill import kill_when, outlived, stored_ok
+    from tests.kill import kill_once_stored, outlived, stored_ok
 
     out = tmp_path / "c"
     study = out / "studies" / "tilt.h5"
     args = [sys.executable, "-m", "dem.cli", "campaign", "--quick", "--steps", "tilt", "--workers", "2",
             "--specimens", "Sh02-Sd020,Sh06-Sd020,Sh1-Sd020", "--out", str(out)]
-    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        kids = kill_when(p, lambda: len(stored_ok(study)) >= 1, workers=2)
-    finally:
-        if p.poll() is None:
-            p.kill()
+    kids = kill_once_stored(args, study, workers=2)
     assert not outlived(kids), "workers still running 10 s after the kill"
     before = stored_ok(study)
     assert 1 <= len(before) < 3

@@ -86,7 +86,6 @@ from dem.cli import main
      "not a --block"),
     (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1",
       "--layout", "oppenheim"], "use --layout discrete"),
-    (["domain", "Sh02-Sd020", "--engine", "dem", "--pier-height", "0.2", "--pier-width", "0.1"], "not available yet"),
     (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.1", "--effective-thickness", "0.8"],
      "use --contact"),
 ])

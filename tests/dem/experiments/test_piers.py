@@ -75,3 +75,13 @@ def test_frame_overturning_amplitude_matches_the_closed_form(engine, beam_densit
     below = 0.05 if engine == "mujoco" else 0.10
     assert shake(m, SinePulse(1.02 * a_cf, freq), s, proto).collapsed
     assert not shake(m, SinePulse((1 - below) * a_cf, freq), s, proto).collapsed
+
+
+def test_the_dem_domain_on_piers_stands_beside_the_four_bar_through_the_piers():
+    from analytic.linkage import mechanism_four_bar
+    from dem.experiments.domain import analytic_domains
+
+    arch, piers = get_specimen("Sh06-Sd015").arch, Piers(0.4, 0.144, courses=2)
+    doms = analytic_domains(arch, [2.0], piers=piers)
+    assert list(doms) == ["four-bar"]  # the two-bar has no piers
+    assert doms["four-bar"].lam == pytest.approx(mechanism_four_bar(discretise(arch, piers=piers)).lam, rel=1e-12)
