@@ -54,6 +54,16 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
                    help=f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})")
     g.add_argument("--density", type=float, default=None,
                    help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g})")
+    add_pier_arguments(p)
+    p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
+                   help="effective contact: every joint touches within its central fraction C of the depth, "
+                        "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
+                        "(archdem calibrate); masses stay those of the full blocks "
+                        f"(default {default_of(discretise, 'contact'):g}: the full joint)")
+
+
+def add_pier_arguments(p: argparse.ArgumentParser) -> None:
+    """The ``--pier-*`` options (see :func:`piers_from_args`)."""
     g = p.add_argument_group("piers (the arch on two equal piers instead of the rigid base; lengths in m)")
     g.add_argument("--pier-height", type=float, default=None, metavar="H",
                    help="pier height from the ground to the springing line")
@@ -69,11 +79,6 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
     g.add_argument("--pier-load", type=float, default=None, metavar="KN",
                    help=f"superimposed load on each pier [kN], 0 to {MAX_PIER_LOAD_KN:g}, e.g. the masonry above: "
                         "carried as mass at the centre of the pier's top (default 0)")
-    p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
-                   help="effective contact: every joint touches within its central fraction C of the depth, "
-                        "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
-                        "(archdem calibrate); masses stay those of the full blocks "
-                        f"(default {default_of(discretise, 'contact'):g}: the full joint)")
 
 
 def arch_from_args(args: argparse.Namespace):

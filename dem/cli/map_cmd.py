@@ -8,8 +8,10 @@ import sys
 
 from dem.cli.common import (
     add_engine_argument,
+    add_pier_arguments,
     contact_option,
     default_of,
+    piers_from_args,
     print_json,
     resolve_contact,
     workers_option,
@@ -55,6 +57,9 @@ def _run(args: argparse.Namespace) -> int:
         raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
     if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
         raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
+    piers = piers_from_args(args)
+    for s in specs if piers is not None else ():
+        piers.check(s.arch)
     if args.resume is not None and args.out:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
     # a mistyped study name would otherwise start a whole new study under that name
@@ -73,7 +78,7 @@ def _run(args: argparse.Namespace) -> int:
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
                             settings={"engine": args.engine} if args.engine != default_of(Settings, "engine") else None,
-                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs})
+                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs}, piers=piers)
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2
@@ -131,5 +136,6 @@ def register(sub) -> None:
                         f"{'/'.join(f'{s:g}' for s in FULL_SCALE_SPANS)} m, "
                         f"{default_of(catalogue_map, 'n_voussoirs')} voussoirs per side)")
     p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
+    add_pier_arguments(p)
     p.add_argument("--json", action="store_true", help="print JSON per specimen")
     p.set_defaults(func=_run)

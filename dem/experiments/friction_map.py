@@ -201,30 +201,37 @@ def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) ->
 
 
 def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequence[float],
-                    n_voussoirs: int = 8, contact: float = 1.0) -> AnalyticCurves:
+                    n_voussoirs: int = 8, contact: float = 1.0, piers=None) -> AnalyticCurves:
     """LP, two-bar and no-sliding references of ``arch`` on the friction values ``mus``; the LP,
-    enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints)."""
+    enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints).
+    On ``piers`` the continuous one has hinges anywhere along ring and piers, and the two-bar ones
+    (a ring on a rigid base) are NaN."""
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.limit_piers import continuous_on_piers
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
     from specimens.blocks import discretise
 
-    asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact)
+    asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact, piers=piers)
     mu = np.asarray(sorted(set(float(m) for m in mus)), dtype=float)
     lam_lp = np.array([solve_lp(asm, m, mu_base).lam for m in mu])
-    lam_tb = np.array([lambda_slide(arch, m) for m in mu])
     lam_ns = float(solve_lp(asm, math.inf, mu_base).lam)
     lam_k = float(enumerate_mechanisms(asm).lam)
-    lam_c = float(continuous_collapse(arch, contact=contact).lam)
+    if piers is not None:
+        lam_c = float(continuous_on_piers(arch, piers, density=asm.density, contact=contact).lam)
+        lam_tb, lam_tb0, ms_tb, ms_tbc = np.full(len(mu), math.nan), math.nan, None, None
+    else:
+        lam_c = float(continuous_collapse(arch, contact=contact).lam)
+        lam_tb, lam_tb0 = np.array([lambda_slide(arch, m) for m in mu]), float(lambda_two_bar(arch))
+        ms_tb = _finite_or_none(mu_star(arch, lam_rock=lam_k))
+        ms_tbc = _finite_or_none(mu_star(arch, lam_rock=lam_c))
     ms_lp = lp_mu_star(asm, mu_base, lam_ns)
     below = above = {}
     if ms_lp is not None and ms_lp > 0:
         def states(m):
             return {k: v for k, v in solve_lp(asm, m, mu_base).joint_states.items() if v != "closed"}
         below, above = states(max(ms_lp - 5 * LP_MU_TOL, 1e-6)), states(ms_lp + 5 * LP_MU_TOL)
-    return AnalyticCurves(mu, lam_lp, lam_tb, lam_ns, lam_k, lam_c, float(lambda_two_bar(arch)), ms_lp,
-                          _finite_or_none(mu_star(arch, lam_rock=lam_k)), _finite_or_none(mu_star(arch, lam_rock=lam_c)),
-                          below, above)
+    return AnalyticCurves(mu, lam_lp, lam_tb, lam_ns, lam_k, lam_c, lam_tb0, ms_lp, ms_tb, ms_tbc, below, above)
 
 
 # ----------------------------------------------------------------------------- results
@@ -347,7 +354,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   scheduler: str | None = None, resume: bool = False, progress: bool = True, refine: int = 3,
                   protocol: dict | None = None, settings: dict | None = None, func: str = DEM_CASE,
                   n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
-                  contact: float | Mapping[str, float] = 1.0) -> MapResult:
+                  contact: float | Mapping[str, float] = 1.0, piers=None) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each
@@ -358,7 +365,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     ``tol = MAP_TILT_TOL``, LP-started, ``MAP_PROTOCOL``). ``func``: the case function (``DEM_CASE`` or ``SYNTHETIC_CASE``);
     ``extra``: additional parameters merged into every case (e.g. ``{"synthetic": {...}}``);
     ``contact``: the effective contact of every joint (DEM cases and the LP / continuous references),
-    or specimen id -> contact.
+    or specimen id -> contact; ``piers``: every specimen stands on these
+    :class:`~specimens.piers.Piers` (the same sizes for all).
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
     from dem.studies.sweep import load_study, run_study
@@ -376,14 +384,19 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   else {s.id: check_contact(contact) for s in specs})
     if set(contact_of) != {s.id for s in specs}:
         raise ArchdemInputError("give the effective contact of every specimen of the map")
+    if piers is not None:
+        for s in specs:
+            piers.check(s.arch)
     protocol = dict(protocol if protocol is not None else MAP_PROTOCOL)
     scaled_protocol(protocol, 1.0)  # validate in the main process
     study_attrs = {"study": STUDY_KIND, "config": config, "mu_base": float(mu_base), "protocol": protocol,
                    "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs),
-                   **({} if set(contact_of.values()) == {1.0} else {"contact": contact_of})}
+                   **({} if set(contact_of.values()) == {1.0} else {"contact": contact_of}),
+                   **({} if piers is None else {"piers": piers.describe()})}
 
     def case(s, mu: float) -> dict:
-        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, settings, n_voussoirs, time_scale, contact_of[s.id])
+        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, settings, n_voussoirs, time_scale, contact_of[s.id],
+                      piers)
         if extra:
             c.update(extra)
         return c
@@ -434,7 +447,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         th = threshold_bracket([p.mu for p in pts], [p.mode for p in pts])
         curve_mus = sorted(set(grid) | set(np.round(np.linspace(min(grid), max(grid), 49), 9).tolist()))
         smaps.append(SpecimenMap(s.id, s.arch, config, float(mu_base), pts, th,
-                                 analytic_curves(s.arch, config, mu_base, curve_mus, n_voussoirs, contact_of[s.id])))
+                                 analytic_curves(s.arch, config, mu_base, curve_mus, n_voussoirs, contact_of[s.id],
+                                                 piers)))
     recs = [by_key[case_key(c)] for c in all_cases if case_key(c) in by_key]
     return MapResult(Path(out_path), config, float(mu_base), grid, smaps, len(recs), sum(not r.ok for r in recs),
                      time.perf_counter() - t0, [r.wall for r in recs if r.ok], rounds, definitions())

@@ -311,3 +311,33 @@ def test_replay_tilt_reproduces_the_collapse():
     assert [j.state for j in rep.joints] == list(res["joint_states"])
     assert (rep.lam, rep.bracket) == (res["lambda"], tuple(res["bracket"]))
     assert [lv for lv, _ in rep.levels] == pytest.approx(np.asarray(res["levels"])[:, 0])
+
+
+def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
+    """The map on piers: every case carries the piers, the references are those of the arch on
+    piers (LP, enumeration, hinges anywhere), the two-bar ones (a ring on a rigid base) are absent."""
+    import h5py
+
+    from analytic.limit_discrete import solve_lp
+    from specimens import Piers, discretise
+
+    real = fm.catalogue_map
+
+    @functools.wraps(real)
+    def fake(*a, **kw):
+        return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
+
+    monkeypatch.setattr(fm, "catalogue_map", fake)
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
+    code, out, err = _cli(["map", "--specimens", "Sh06-Sd015", "--mu", "0.3:0.9:0.2", "--workers", "1", "--refine", "0",
+                           "--out", str(tmp_path / "s.h5"), "--json", *piers], capsys)
+    assert code == 0, err
+    d = json.loads(out)[0]
+    asm = discretise(get_specimen("Sh06-Sd015").arch, piers=Piers(0.4, 0.144, courses=2))
+    assert d["lambda_no_sliding"] == pytest.approx(solve_lp(asm, math.inf, 1.0).lam, rel=1e-9)
+    assert d["mu_star_two_bar"] is None and d["mu_star_lp"] is not None
+    with h5py.File(tmp_path / "s.h5", "r") as f:
+        assert all(json.loads(g.attrs["params"])["piers"]["height"] == 0.4 for g in f["cases"].values())
+    code, _, err = _cli(["map", "--specimens", "Sh06-Sd015", "--out", str(tmp_path / "t.h5"), "--pier-height", "0.4",
+                         "--pier-width", "0.04"], capsys)
+    assert code == 2 and "narrower than the ring's springing" in err and not (tmp_path / "t.h5").exists()
