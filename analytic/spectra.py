@@ -122,9 +122,9 @@ def ntc2018(ag: float, F0: float, Tc_star: float, soil: str = "A", topography: s
             damping: float = 5.0) -> ElasticSpectrum:
     """NTC 2018 §3.2.3.2.1 elastic spectrum: ``ag`` [m/s^2] on rock, ``F0`` [-], ``Tc_star`` [s] of the
     site and return period; ``soil`` A-E, ``topography`` T1-T4, ``damping`` [%]."""
-    _positive("ag", ag, 3 * G)
+    _positive("ag [m/s^2]", ag, 3 * G)
     _positive("F0", F0, 5.0)
-    _positive("Tc*", Tc_star, 2.0)
+    _positive("Tc* [s]", Tc_star, 2.0)
     soil = _category(soil, NTC_SOIL, "soil category")
     topo = _category(topography, NTC_TOPOGRAPHY, "topographic category")
     (a, b, lo, hi), (c, p) = NTC_SOIL[soil]
@@ -140,7 +140,7 @@ def ntc2018(ag: float, F0: float, Tc_star: float, soil: str = "A", topography: s
 def ec8(ag: float, ground: str = "A", spectrum_type: int = 1, damping: float = 5.0) -> ElasticSpectrum:
     """EN 1998-1 §3.2.2.2 elastic spectrum: design ground acceleration on rock ``ag`` [m/s^2],
     ``ground`` type A-E, ``spectrum_type`` 1 (large earthquakes) or 2 (moderate), ``damping`` [%]."""
-    _positive("ag", ag, 3 * G)
+    _positive("ag [m/s^2]", ag, 3 * G)
     if spectrum_type not in EC8_GROUND:
         raise ArchdemInputError(f"EC8 spectrum type must be 1 or 2, got {spectrum_type!r}")
     ground = _category(ground, EC8_GROUND[spectrum_type], "ground type")

@@ -58,7 +58,7 @@ def test_the_spectrum_is_continuous_at_its_corners(s):
 @pytest.mark.parametrize("call, msg", [
     (lambda: ntc2018(0.25 * G, 2.4, 0.3, "F"), "soil category must be one of A, B, C, D, E"),
     (lambda: ntc2018(0.25 * G, 2.4, 0.3, "C", "T5"), "topographic category must be one of"),
-    (lambda: ntc2018(float("nan"), 2.4, 0.3), "ag must be in"),
+    (lambda: ntc2018(float("nan"), 2.4, 0.3), r"ag \[m/s\^2\] must be in"),
     (lambda: ec8(0.25 * G, "A", 3), "EC8 spectrum type must be 1 or 2"),
     (lambda: ec8(0.25 * G, "A", 1, damping=-1), "damping ratio must be a percentage"),
     (lambda: ec8(0.25 * G, "A").Se(4.5), r"periods must be in \[0, 4\] s"),
