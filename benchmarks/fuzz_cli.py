@@ -43,6 +43,8 @@ COMMANDS = [
     ("draw", ["--Sh", "0.6", "--Sd", "0.2", "--Rc", "0.2", "--out", "d.png"], ["--Sh", "--Sd", "--Rc", "--width"]),
     ("analytic", ["--Ri", "0.2", "--Re", "0.25", "--e", "0.1"], ["--Ri", "--Re", "--e", "--voussoirs"]),
     ("map", ["--specimens", "Sh02-Sd020"], ["--resume"]),
+    ("assess", ARCH + ["--spectrum", "ntc2018", "--ag", "0.25", "--F0", "2.4", "--Tc-star", "0.3"],
+     ["--ag", "--F0", "--Tc-star", "--damping", "--FC", "--q", "--soil", "--topography"]),
     ("draw", ARCH + ["--out", "d.png", "--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
     ("analytic", ARCH + ["--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),
     ("rock", ARCH + ["--freq", "4", "--amplitude", "0.5", "--pier-height", "0.2", "--pier-width", "0.1"], PIER_OPTIONS),

@@ -18,6 +18,7 @@ from specimens.errors import ArchdemInputError
 _COMMANDS = [
     "specimens_cmd",
     "analytic_cmd",
+    "assess_cmd",
     "calibrate_cmd",
     "campaign_cmd",
     "tilt_cmd",

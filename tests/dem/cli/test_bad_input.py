@@ -88,6 +88,18 @@ from dem.cli import main
       "--layout", "oppenheim"], "use --layout discrete"),
     (["analytic", "Sh02-Sd020", "--pier-height", "0.2", "--pier-width", "0.1", "--effective-thickness", "0.8"],
      "use --contact"),
+    # assess
+    (["assess", "Sh02-Sd020", "--spectrum", "ntc2018", "--ag", "0.25"], "needs --F0 and --Tc-star"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8"], "--ag (peak ground acceleration on rock, in g) is needed"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0"], "--ag must be in (0, 3] g"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--F0", "2.4"], "belong to the NTC 2018 spectrum"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ntc2018", "--ag", "0.2", "--F0", "2.4", "--Tc-star", "0.3", "--type", "2"],
+     "--type is the EN 1998-1 spectrum type"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--soil", "F"], "argument --soil: invalid choice"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--FC", "0.5"], "confidence factor FC must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--q", "nan"], "behaviour factor q must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ntc2018", "--ag", "0.2", "--F0", "nan", "--Tc-star", "0.3"], "F0 must be in"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--damping", "-3"], "damping ratio must be a percentage"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
     monkeypatch.chdir(tmp_path)

@@ -16,6 +16,8 @@ def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
     from analytic.calibration import CALIBRATION_FILE
     from analytic.domain import failure_domain
+    from analytic.kinematic import LinearKinematic, linear_kinematic
+    from analytic.spectra import ntc2018
     from analytic.summary import analyse
     from dem.campaign.context import CampaignContext
     from dem.core.settings import Settings
@@ -41,6 +43,9 @@ def _lib():
         "campaign": {"config": default_of(CampaignContext, "config"), "engine": s.engine,
                      "contact": default_of(CampaignContext, "contact")},
         "calibrate": {"out": str(CALIBRATION_FILE)},
+        "assess": {"soil": default_of(ntc2018, "soil"), "topography": default_of(ntc2018, "topography"),
+                   "damping": default_of(ntc2018, "damping"), "FC": default_of(linear_kinematic, "FC"),
+                   "q": default_of(LinearKinematic.ground_check, "q")},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
                 "mu_base": default_of(catalogue_map, "mu_base"), "refine": default_of(catalogue_map, "refine"),
@@ -68,7 +73,7 @@ CLI_ONLY = {
 # A minimal command line of every sub-command.
 ARGV = {
     "specimens": [], "mesh": ["Sh02-Sd015", "--out", "o"], "draw": ["Sh02-Sd015", "--out", "o.png"],
-    "analytic": ["Sh02-Sd015"], "calibrate": [], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
+    "analytic": ["Sh02-Sd015"], "assess": ["Sh02-Sd015", "--spectrum", "ec8"], "calibrate": [], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
     "threshold": ["Sh02-Sd015", "--sine", "4"], "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
 }
