@@ -28,6 +28,8 @@ from specimens.errors import ArchdemInputError
 Q_MASONRY = 2.0
 #: Confidence factors of the knowledge levels LC1, LC2, LC3.
 CONFIDENCE_FACTORS = {"LC1": 1.35, "LC2": 1.2, "LC3": 1.0}
+#: Accepted ranges of the confidence and behaviour factors (beyond them a typo, not a judgement).
+FC_RANGE, Q_RANGE = (1.0, 3.0), (1.0, 10.0)
 
 
 @dataclass(frozen=True)
@@ -47,8 +49,8 @@ class LinearKinematic:
         ``capacity_pga = q a0*`` [m/s^2], ``demand_pga``, ``safety_index`` = capacity / demand, ``verified``."""
         if not (math.isfinite(pga) and pga > 0):
             raise ArchdemInputError(f"site peak ground acceleration must be a positive number, got {pga!r}")
-        if not (math.isfinite(q) and q >= 1):
-            raise ArchdemInputError(f"behaviour factor q must be a number >= 1, got {q!r}")
+        if not (math.isfinite(q) and Q_RANGE[0] <= q <= Q_RANGE[1]):
+            raise ArchdemInputError(f"behaviour factor q must be a number from {Q_RANGE[0]:g} to {Q_RANGE[1]:g}, got {q!r}")
         cap = q * self.a0_star
         return {"q": q, "capacity_pga": cap, "demand_pga": pga, "safety_index": cap / pga, "verified": cap >= pga}
 
@@ -59,8 +61,9 @@ class LinearKinematic:
 
 def linear_kinematic(mech, FC: float = CONFIDENCE_FACTORS["LC1"]) -> LinearKinematic:
     """The linear kinematic analysis of ``mech`` (module doc) at confidence factor ``FC`` >= 1."""
-    if not (isinstance(FC, (int, float)) and math.isfinite(FC) and FC >= 1):
-        raise ArchdemInputError(f"confidence factor FC must be a number >= 1, got {FC!r}")
+    if not (isinstance(FC, (int, float)) and math.isfinite(FC) and FC_RANGE[0] <= FC <= FC_RANGE[1]):
+        raise ArchdemInputError(f"confidence factor FC must be a number from {FC_RANGE[0]:g} to {FC_RANGE[1]:g}, "
+                                f"got {FC!r}")
     m = np.asarray(mech.masses, dtype=float)
     dx = mech.velocity_map(0.0)[:, 0]
     den = float(np.sum(m * dx * dx))

@@ -98,6 +98,8 @@ from dem.cli import main
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--soil", "F"], "argument --soil: invalid choice"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--FC", "0.5"], "confidence factor FC must be"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--q", "nan"], "behaviour factor q must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--FC", "1e30"], "FC must be a number from 1 to 3"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--q", "1e30"], "q must be a number from 1 to 10"),
     (["assess", "Sh02-Sd020", "--spectrum", "ntc2018", "--ag", "0.2", "--F0", "nan", "--Tc-star", "0.3"], "F0 must be in"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--damping", "-3"], "damping ratio must be a percentage"),
 ])
