@@ -485,6 +485,18 @@ def minimised_four_bar(arch: PointedArch, density: float = 500.0, direction: int
     return arch_four_bar(arch, minimised_layout(arch, density, contact), density, direction=direction, name=name)
 
 
+def governing_four_bar(arch: PointedArch, density: float = 500.0, contact: float = 1.0, piers=None,
+                       **discretise_kw) -> FourBar:
+    """The four-bar of the arch's governing mechanism, opened by a positive ground acceleration: the
+    continuous ring's minimum, or on ``piers`` the discrete mechanism through them (the assembly cut
+    with ``discretise_kw``)."""
+    if piers is None:
+        return minimised_four_bar(arch, density, direction=1, contact=contact)
+    from specimens.blocks import discretise
+
+    return mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers, **discretise_kw), direction=1)
+
+
 def mechanism_four_bar(structure, direction: int | None = 1, name: str = "four-bar (discrete)") -> FourBar:
     """The four-bar of the minimum discrete mechanism of ``structure`` (an assembly, on piers or
     not, or a :class:`specimens.frame.Frame`): hinges at the ends of the joints' contact, bars

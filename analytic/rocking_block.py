@@ -88,3 +88,18 @@ class RockingBlock(Mechanism):
     def impact_candidates(self) -> tuple["RockingBlock"]:
         """After an impact the block rocks about the other corner."""
         return (replace(self, pivot=-self.pivot),)
+
+
+def rocking_frame_equivalent(b: float, h: float, gamma: float, density: float = 500.0,
+                             width: float = 0.1) -> tuple[RockingBlock, float]:
+    """The closed-form rocking frame (docs/physics/dynamics.md#11-the-rocking-frame): piers of
+    half-width ``b`` and half-height ``h`` [m] carrying a lintel of ``gamma`` times their mass move
+    as the block of the same slenderness scaled by ``(1 + 3 gamma) / (1 + 2 gamma)``, with the
+    impact velocity ratio ``[1 - 3/2 sin^2 alpha + 3 gamma cos 2 alpha] / (1 + 3 gamma)``.
+    Returns ``(block, restitution)``."""
+    if not (math.isfinite(gamma) and gamma >= 0):
+        raise ArchdemInputError(f"frame mass ratio gamma must be a number >= 0, got {gamma!r}")
+    k = (1 + 3 * gamma) / (1 + 2 * gamma)
+    alpha = math.atan2(b, h)
+    r = (1 - 1.5 * math.sin(alpha) ** 2 + 3 * gamma * math.cos(2 * alpha)) / (1 + 3 * gamma)
+    return RockingBlock(b * k, h * k, density=density, width=width), r

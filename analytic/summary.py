@@ -14,7 +14,6 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     at the same density, spacing, thickness and contact if the caller has it (e.g. the
     ``"continuous"`` of a :func:`multiplier_series` row); solved here otherwise (about 1 s)."""
     from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
     from specimens.blocks import discretise
 
@@ -38,8 +37,7 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
                                        effective_thickness=effective_thickness, contact=contact)
         caught_msgs = [str(w.message) for w in caught]
     asm = discretise(arch, config=config, **kw)
-    kin = enumerate_mechanisms(asm)
-    lp = solve_lp(asm, mu_joint, mu_base)
+    disc, stands = _discrete(asm, mu_joint, mu_base)
     return {
         "arch": arch.describe(),
         "config": config, "mu_joint": mu_joint, "mu_base": mu_base,
@@ -51,15 +49,26 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
                               for h, u in zip(cont.hinges, cont.u)] if cont.layout else [],
         "continuous_converged": cont.converged, "continuous_message": cont.message,
         "warnings": caught_msgs,
+        **disc,
+        "lambda_two_bar": lambda_two_bar(arch, density),
+        "lambda_slide_two_bar": lambda_slide(arch, min(mu_joint, 1e6), density),
+        "mu_star": mu_star(arch, cont.lam, density),
+        "stands": bool(cont.stands and stands),
+    }
+
+
+def _discrete(asm, mu_joint: float, mu_base: float) -> tuple[dict, bool]:
+    """The enumeration's and the LP's entries of :func:`analyse` for ``asm``, and whether both stand."""
+    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+
+    kin = enumerate_mechanisms(asm)
+    lp = solve_lp(asm, mu_joint, mu_base)
+    return {
         "lambda_discrete": kin.lam,
         "hinges_discrete": [{"joint": j, "face": f} for j, f in kin.hinges],
         "lambda_lp": lp.lam, "lp_status": lp.message,
         "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
-        "lambda_two_bar": lambda_two_bar(arch, density),
-        "lambda_slide_two_bar": lambda_slide(arch, min(mu_joint, 1e6), density),
-        "mu_star": mu_star(arch, cont.lam, density),
-        "stands": bool(cont.stands and kin.stands and lp.stands),
-    }
+    }, bool(kin.stands and lp.stands)
 
 
 #: Why an arch on piers has no two-bar multiplier (it models the ring on a rigid base).
@@ -70,13 +79,13 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
     """:func:`analyse` of an arch on piers: hinges anywhere (the fine LP of
     :func:`analytic.limit_piers.continuous_on_piers`), the discrete enumeration and the LP, hinges
     named by joint."""
-    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.limit_piers import continuous_on_piers
     from specimens.blocks import discretise
 
     asm = discretise(arch, config=config, **kw)
-    kin = enumerate_mechanisms(asm)
-    lp = solve_lp(asm, mu_joint, mu_base)
+    disc, stands = _discrete(asm, mu_joint, mu_base)
+    for h in disc["hinges_discrete"]:
+        h["in_pier"] = asm.joint(h["joint"]).in_pier
     cont = continuous_on_piers(arch, asm.piers, density=asm.density, contact=asm.contact)
     converged = abs(cont.lam - cont.lam_half) <= 1e-3 * abs(cont.lam)
     return {
@@ -88,12 +97,9 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
                               f"the piers in {cont.pier_courses} courses (halved: lambda {cont.lam_half:.5f})",
         "warnings": [] if converged else [f"the fine cut has not converged: lambda {cont.lam:.5f}, "
                                           f"{cont.lam_half:.5f} on the halved cut"],
-        "lambda_discrete": kin.lam,
-        "hinges_discrete": [{"joint": j, "face": f, "in_pier": asm.joint(j).in_pier} for j, f in kin.hinges],
-        "lambda_lp": lp.lam, "lp_status": lp.message,
-        "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
+        **disc,
         "lambda_two_bar": None, "lambda_slide_two_bar": None, "mu_star": None, "two_bar_message": RING_ONLY,
-        "stands": bool(cont.stands and kin.stands and lp.stands),
+        "stands": bool(cont.stands and stands),
     }
 
 

@@ -48,7 +48,7 @@ def frame_job(job: tuple[str, float, float]) -> dict:
     engine, beam_density, freq = job
     from analytic.domain import domain_column
     from analytic.inputs import SinePulse
-    from analytic.rocking_block import RockingBlock
+    from analytic.rocking_block import rocking_frame_equivalent
     from dem.core.model import frame_model
     from dem.core.settings import Settings
     from dem.experiments.shake import ShakeProtocol, shake
@@ -56,14 +56,12 @@ def frame_job(job: tuple[str, float, float]) -> dict:
     from specimens.frame import rocking_frame
 
     f = rocking_frame(B, H, 0.3, 0.05, beam_density=beam_density)
-    g, alpha = f.gamma, math.atan(B / H)
-    k = (1 + 3 * g) / (1 + 2 * g)
-    r = (1 - 1.5 * math.sin(alpha) ** 2 + 3 * g * math.cos(2 * alpha)) / (1 + 3 * g)
-    a = domain_column(RockingBlock(B * k, H * k), "sine0", freq, 0.2 * G, 2 * G, n_scan=12, restitution=r).thresholds[0][0]
+    blk, r = rocking_frame_equivalent(B, H, f.gamma)
+    a = domain_column(blk, "sine0", freq, 0.2 * G, 2 * G, n_scan=12, restitution=r).thresholds[0][0]
     m = frame_model(f)
     s = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, planar=True, engine=engine)
     out = {ratio: shake(m, SinePulse(ratio * a, freq), s, ShakeProtocol(tail=2.0)).collapsed for ratio in RATIOS}
-    return {"engine": engine, "gamma": g, "freq": freq, "closed_form_g": a / G,
+    return {"engine": engine, "gamma": f.gamma, "freq": freq, "closed_form_g": a / G,
             "collapsed": {f"{k:g}": v for k, v in out.items()},
             "collapse_from": min((x for x in RATIOS if all(out[y] for y in RATIOS if y >= x)), default=None)}
 

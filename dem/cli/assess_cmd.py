@@ -10,7 +10,6 @@ from dem.cli.common import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
-    piers_from_args,
     print_json,
 )
 from specimens.constants import G
@@ -36,15 +35,13 @@ def _spectrum(args: argparse.Namespace):
 
 
 def _mechanism(args: argparse.Namespace, arch):
-    """The four-bar of the arch's governing mechanism: the continuous ring's minimum, or on piers
-    the discrete mechanism through them; opened by a positive ground acceleration."""
-    from analytic.linkage import mechanism_four_bar, minimised_four_bar
-    from specimens.blocks import DEFAULT_DENSITY, discretise
+    """The four-bar of the arch's governing mechanism (on piers: the discrete one through them)."""
+    from analytic.linkage import governing_four_bar
+    from specimens.blocks import DEFAULT_DENSITY
 
     kw = discretisation_kwargs(args, arch)
-    if piers_from_args(args) is not None:
-        return mechanism_four_bar(discretise(arch, **kw), direction=1)
-    return minimised_four_bar(arch, kw.get("density", DEFAULT_DENSITY), direction=1, contact=kw.get("contact", 1.0))
+    return governing_four_bar(arch, kw.pop("density", DEFAULT_DENSITY), kw.pop("contact", 1.0), kw.pop("piers", None),
+                              **kw)
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -47,12 +47,7 @@ def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, worke
     from analytic.domain import failure_domain
 
     out = {}
-    if piers is not None:
-        from specimens.blocks import discretise
-
-        fb = linkage.mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers), direction=1)
-    else:
-        fb = linkage.arch_four_bar(arch, linkage.minimised_layout(arch, density, contact), density, direction=1)
+    fb = linkage.governing_four_bar(arch, density, contact, piers)
     out["four-bar"] = failure_domain(fb, "sine0", freqs, a_max_ratio=10.0, n_scan=24, tol=1e-3, workers=workers)
     if contact != 1.0 or piers is not None:
         return out

@@ -7,7 +7,7 @@ from analytic.domain import domain_column
 from analytic.impact import energy_restitution
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
 from analytic.linkage import mechanism_four_bar
-from analytic.rocking_block import RockingBlock
+from analytic.rocking_block import rocking_frame_equivalent
 from specimens import Piers, discretise, get_specimen
 from specimens.constants import G
 from specimens.frame import rocking_frame
@@ -17,17 +17,6 @@ B, H = 0.05, 0.2  # half-width and half-height of the frame's piers [m]
 
 def frame(beam_density: float):
     return rocking_frame(B, H, 0.3, 0.05, beam_density=beam_density)
-
-
-def frame_restitution(alpha: float, gamma: float) -> float:
-    """Velocity ratio of the rocking frame at impact (docs/physics/dynamics.md#11-the-rocking-frame)."""
-    return (1 - 1.5 * math.sin(alpha) ** 2 + 3 * gamma * math.cos(2 * alpha)) / (1 + 3 * gamma)
-
-
-def equivalent_block(gamma: float) -> RockingBlock:
-    """The rocking block with the frame's slenderness and frequency parameter: R (1 + 3 gamma) / (1 + 2 gamma)."""
-    k = (1 + 3 * gamma) / (1 + 2 * gamma)
-    return RockingBlock(B * k, H * k)
 
 
 @pytest.mark.parametrize("beam_density", [0.5, 500.0, 5000.0, 50000.0])
@@ -44,9 +33,9 @@ def test_frame_onset_is_b_over_h_whatever_the_lintel(beam_density):
 @pytest.mark.parametrize("beam_density", [50.0, 500.0, 5000.0])
 def test_frame_four_bar_is_the_closed_form_rocking_frame(beam_density):
     f = frame(beam_density)
-    fb, blk = mechanism_four_bar(f), equivalent_block(f.gamma)
+    fb, (blk, r) = mechanism_four_bar(f), rocking_frame_equivalent(B, H, f.gamma)
     alpha = math.atan(B / H)
-    assert energy_restitution(fb, fb.face_swapped()) == pytest.approx(frame_restitution(alpha, f.gamma), rel=1e-9)
+    assert energy_restitution(fb, fb.face_swapped()) == pytest.approx(r, rel=1e-9)
     assert fb.omega0 == pytest.approx(blk.omega0, rel=1e-9) and fb.phi_cr == pytest.approx(alpha, rel=1e-7)
 
 
@@ -59,8 +48,8 @@ def test_frame_overturning_amplitude_matches_the_equivalent_block(freq):
     for beam_density in (50.0, 2000.0):
         f = frame(beam_density)
         a_fb = domain_column(mechanism_four_bar(f), "sine0", freq, 0.2 * G, 3 * G, n_scan=12).thresholds[0][0]
-        a_cf = domain_column(equivalent_block(f.gamma), "sine0", freq, 0.2 * G, 3 * G, n_scan=12,
-                             restitution=frame_restitution(math.atan(B / H), f.gamma)).thresholds[0][0]
+        blk, r = rocking_frame_equivalent(B, H, f.gamma)
+        a_cf = domain_column(blk, "sine0", freq, 0.2 * G, 3 * G, n_scan=12, restitution=r).thresholds[0][0]
         assert a_fb == pytest.approx(a_cf, rel=2e-3)
         thresholds.append(a_cf)
     assert thresholds[1] > thresholds[0]

@@ -46,3 +46,13 @@ def test_bad_block_input():
         RockingBlock(-0.1, 0.5)
     with pytest.raises(ArchdemInputError):
         RockingBlock(0.1, 0.5, pivot=0)
+
+
+def test_the_rocking_frame_without_lintel_is_the_block():
+    """gamma = 0: the frame's equivalent is the pier itself with Housner's restitution."""
+    from analytic.rocking_block import rocking_frame_equivalent
+
+    blk, r = rocking_frame_equivalent(0.05, 0.2, 0.0)
+    assert (blk.b, blk.h) == (0.05, 0.2) and r == pytest.approx(1 - 1.5 * math.sin(blk.alpha) ** 2, rel=1e-14)
+    heavy, r_heavy = rocking_frame_equivalent(0.05, 0.2, 1e9)  # all lintel: size x 3/2, ratio -> cos 2 alpha
+    assert heavy.R == pytest.approx(1.5 * blk.R, rel=1e-8) and r_heavy == pytest.approx(math.cos(2 * blk.alpha), rel=1e-8)
