@@ -217,8 +217,11 @@ class LPResult:
         return tuple((k, f) for k, f in self.joint_hinge_face.items() if f)
 
 
-def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: float | None = None) -> LPResult:
-    """Maximise ``lambda`` for a :class:`ContactModel` (see :func:`solve_lp`)."""
+def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: float | None = None,
+                     tension: np.ndarray | None = None) -> LPResult:
+    """Maximise ``lambda`` for a :class:`ContactModel` (see :func:`solve_lp`); ``tension`` (n_joints, 2):
+    the tensile force [N] each joint may carry at its intrados and extrados force points (strips bonded
+    across it), else none."""
     s = _check_sign(load_sign)
     nb, nj = len(model.mass), len(model.joint_names)
     W = float(model.mass.sum())
@@ -262,7 +265,11 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
     b_ub = np.zeros(len(rows)) if rows else None
     cost = np.zeros(nv)
     cost[il] = -1.0
-    bounds = [(0, None)] * (2 * nj) + [(None, None)] * (2 * nj + 1)
+    if tension is None:
+        bounds = [(0, None)] * (2 * nj)
+    else:  # a strip's tension lets the normal force at its end go below zero, down to -T
+        bounds = [(-float(tension[j, k]) / (G * W), None) for j in range(nj) for k in range(2)]
+    bounds += [(None, None)] * (2 * nj + 1)
     res = linprog(cost, A_ub=A_ub, b_ub=b_ub, A_eq=A, b_eq=rhs, bounds=bounds, method="highs",
                   options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
     common = dict(load_sign=s, mu_joint=float(np.nanmax(model.mu)) if nj else math.inf,
@@ -333,6 +340,7 @@ def solve_lp(
     mu_joint: float,
     mu_base: float,
     load_sign: int = +1,
+    tension: np.ndarray | None = None,
 ) -> LPResult:
     """Static limit analysis of a discretised arch: the largest ``lambda`` with equilibrium.
 
@@ -340,10 +348,11 @@ def solve_lp(
     (``float('inf')`` = no sliding); the force points are the ends of each joint's contact
     (the assembly's ``contact``).
     Geometry that cannot stand under self-weight gives ``stands = False`` (``lam < 0`` or an
-    infeasible LP with ``lam = nan``), never an exception.
+    infeasible LP with ``lam = nan``), never an exception. ``tension`` (n_joints, 2) [N]: what
+    strips let each joint carry in tension at its intrados / extrados force point.
     """
     model = contact_model(assembly, mu_joint, mu_base)
-    res = solve_contact_lp(model, load_sign, length_scale=assembly.length_scale)
+    res = solve_contact_lp(model, load_sign, length_scale=assembly.length_scale, tension=tension)
     return LPResult(res.lam, res.status, res.message, res.stands, res.joint_states, res.joint_hinge_face,
                     res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(assembly.contact))
 

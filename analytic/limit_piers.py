@@ -42,7 +42,9 @@ class PiersCollapse:
         return self.lam >= 0
 
 
-def _fine(arch, piers, n_ring: int, density: float, contact: float, refine: int):
+def fine_cut(arch, piers, n_ring: int, density: float, contact: float, refine: int = 1):
+    """The fine cut of the arch on ``piers``: ``n_ring / refine`` voussoirs per side, virtual pier courses
+    about a quarter of the ring's thickness tall."""
     from dataclasses import replace
 
     t_courses = math.ceil(COURSES_PER_T * piers.height / arch.t / piers.courses) // refine
@@ -56,9 +58,9 @@ def continuous_on_piers(arch, piers, density: float = DEFAULT_DENSITY, contact: 
                         n_ring: int = N_RING) -> PiersCollapse:
     """Minimum multiplier of an arch on ``piers`` with hinges anywhere (no sliding), by the static LP
     on the fine cut (module doc)."""
-    asm = _fine(arch, piers, n_ring, density, contact, 1)
+    asm = fine_cut(arch, piers, n_ring, density, contact, 1)
     lp = solve_lp(asm, math.inf, math.inf)
-    half = solve_lp(_fine(arch, piers, n_ring, density, contact, 2), math.inf, math.inf)
+    half = solve_lp(fine_cut(arch, piers, n_ring, density, contact, 2), math.inf, math.inf)
     hinges = []
     for name, face in lp.hinges:
         j = asm.joint(name)

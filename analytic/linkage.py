@@ -214,6 +214,10 @@ class FourBar(_RingLinkage):
         out = super().summary()
         if self.joints:
             out["hinges"] = [{"joint": j, "face": f} for j, f in self.joints]
+        elif self.hinges is not None:
+            out["hinges"] = [{"face": h.face} for h in self.hinges]
+        for h, p in zip(out.get("hinges", []), self.points):
+            h["angle_rad"] = polar_angle(p)
         return out
 
     def same_as(self, other: Mechanism) -> bool:
@@ -503,19 +507,93 @@ def mechanism_four_bar(structure, direction: int | None = 1, name: str = "four-b
     through the bodies between them, piers included (docs/physics/dynamics.md#3-the-four-bar-linkage).
     Impacts swap every hinge to the other end of its joint. ``direction`` +1/-1 orients the
     mechanism so that that sign of ground acceleration opens it (None: as found)."""
-    from analytic.limit_discrete import FACES, enumerate_mechanisms
+    from analytic.limit_discrete import enumerate_mechanisms
 
     # a positive ground acceleration loads the blocks along -x
     kin = enumerate_mechanisms(structure, load_sign=-1 if direction == 1 else 1)
     if not kin.joints:
         raise ArchdemInputError(f"no admissible four-hinge mechanism found ({kin.message})")
-    joints = [structure.joints[q] for q in kin.joints]
-    others = [j.contact_points[1 - FACES.index(f)] for j, (_, f) in zip(joints, kin.hinges)]
-    fb = replace(four_bar(kin.hinge_points, kin.blocks, others, [j.normal for j in joints], name=name),
-                 joints=kin.hinges)
+    fb = four_bar_through(structure, kin.hinges, name=name)
     if direction is not None and fb.direction != direction:  # pragma: no cover - fixed by the load's sign
         raise AssertionError(f"the discrete four-bar opens for {fb.direction:+d}, not {direction:+d}")
     return fb
+
+
+def polar_angle(p: Pt) -> float:
+    """Polar angle [rad] about O (the springing line's midpoint) of a point: 0 at the right springing,
+    pi at the left, negative in the right pier and above pi in the left one."""
+    a = math.atan2(float(p[1]), float(p[0]))
+    return a + 2 * math.pi if a < -math.pi / 2 else a
+
+
+@dataclass(frozen=True, eq=False)
+class RigidRotation(Mechanism):
+    """One rigid body (``body_mass`` [kg], ``centroid`` [m], centroidal ``body_inertia`` [kg m^2]) turning about a
+    fixed ``pivot`` [m]: the mechanism of a structure that opens at a single joint (an arch held
+    monolithic by strips rocking on one springing). ``sense`` +1: counter-clockwise for ``phi > 0``."""
+
+    pivot: Pt
+    body_mass: float
+    centroid: Pt
+    body_inertia: float
+    sense: int = 1
+    name: str = "rigid rotation"
+    joints: tuple[tuple[str, str], ...] = ()
+    g: float = G
+
+    @property
+    def masses(self) -> tuple[float, ...]:  # type: ignore[override]
+        return (self.body_mass,)
+
+    @property
+    def inertias(self) -> tuple[float, ...]:  # type: ignore[override]
+        return (self.body_inertia,)
+
+    @property
+    def label(self) -> str:
+        return self.name
+
+    def body_states(self, phi: float) -> list[BodyState]:
+        return [rotating_body(self.pivot, self.centroid, self.sense * phi, float(self.sense), 0.0)]
+
+    def geometric_limit(self) -> float:
+        return math.pi / 2
+
+    def rest_fields(self) -> tuple[RigidField, ...]:
+        return (RigidField("body", *field_of(self.body_states(0.0)[0])),)
+
+    def impact_candidates(self) -> list[Mechanism]:
+        return []
+
+    def summary(self) -> dict:
+        return {**super().summary(), "hinges": [{"joint": n, "face": f, "angle_rad": polar_angle(self.pivot)}
+                                                for n, f in self.joints]}
+
+
+def four_bar_through(structure, hinges, name: str = "four-bar") -> FourBar:
+    """The four-bar of ``structure`` (an assembly) through four given hinges ``((joint, face), ...)``
+    left to right: hinge points at the ends of the joints' contact, bars through the bodies between
+    them, oriented so that gravity resists the opening (a single hinge: the whole structure turns
+    about it, :class:`RigidRotation`)."""
+    from analytic.limit_discrete import FACES, macro_block_of_bodies
+
+    by_name = {j.name: j for j in structure.joints}
+    joints = [by_name[n] for n, _ in hinges]
+    if len(joints) == 1:  # one joint opens: the whole structure turns about it
+        (j,), (_, f) = joints, hinges[0]
+        mb = macro_block_of_bodies(structure, 0, len(structure.bodies) - 1)
+        P = j.contact_points[FACES.index(f)]
+        rr = RigidRotation((float(P[0]), float(P[1])), float(mb.mass), (float(mb.centroid[0]), float(mb.centroid[1])),
+                           float(mb.inertia), name=name.replace("four-bar", "rigid rotation"), joints=tuple(hinges))
+        return rr if rr.dpotential(0.0) > 0 else replace(rr, sense=-1)
+    lo = [j.b for j in joints[:3]]
+    hi = [j.a for j in joints[1:]]
+    if len(joints) != 4 or min(lo) < 0 or any(h < q for q, h in zip(lo, hi)):
+        raise ArchdemInputError(f"not a four-hinge mechanism left to right: {hinges!r}")
+    points = [j.contact_points[FACES.index(f)] for j, (_, f) in zip(joints, hinges)]
+    others = [j.contact_points[1 - FACES.index(f)] for j, (_, f) in zip(joints, hinges)]
+    blocks = [macro_block_of_bodies(structure, q, h) for q, h in zip(lo, hi)]
+    return replace(four_bar(points, blocks, others, [j.normal for j in joints], name=name), joints=tuple(hinges))
 
 
 # ---------------------------------------------------------------------------------------------

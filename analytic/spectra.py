@@ -58,8 +58,29 @@ def damping_correction(xi: float) -> float:
     return max(0.55, math.sqrt(10.0 / (5.0 + xi)))
 
 
+class _SpectrumBase:
+    """What every spectrum shares: the period range and the displacement spectrum."""
+
+    name: str
+    t_max: float
+
+    def _periods(self, T) -> np.ndarray:
+        T = np.asarray(T, dtype=float)
+        if not np.all(np.isfinite(T)) or np.any(T < 0) or np.any(T > self.t_max + 1e-12):
+            raise ArchdemInputError(f"{self.name}: periods must be in [0, {self.t_max:g}] s")
+        return T
+
+    def Se(self, T) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def SDe(self, T) -> np.ndarray:
+        """Elastic spectral displacement [m] at periods ``T`` [s]: ``Se (T / 2 pi)^2``."""
+        T = self._periods(T)
+        return self.Se(T) * (T / (2.0 * math.pi)) ** 2
+
+
 @dataclass(frozen=True)
-class ElasticSpectrum:
+class ElasticSpectrum(_SpectrumBase):
     """An elastic spectrum of the codes' shape: ``ag`` [m/s^2] on rock, ``S`` soil (and topography)
     factor, ``eta`` damping correction, ``F0`` plateau amplification, corner periods ``TB``, ``TC``,
     ``TD`` and the longest period ``t_max`` [s] of its validity; ``params``: what it was built from."""
@@ -80,12 +101,6 @@ class ElasticSpectrum:
         """Peak ground acceleration at the site ``ag S`` [m/s^2] (``Se(0)``)."""
         return self.ag * self.S
 
-    def _periods(self, T) -> np.ndarray:
-        T = np.asarray(T, dtype=float)
-        if not np.all(np.isfinite(T)) or np.any(T < 0) or np.any(T > self.t_max + 1e-12):
-            raise ArchdemInputError(f"{self.name}: periods must be in [0, {self.t_max:g}] s")
-        return T
-
     def Se(self, T) -> np.ndarray:
         """Elastic spectral acceleration [m/s^2] at periods ``T`` [s]."""
         T = self._periods(T)
@@ -94,11 +109,6 @@ class ElasticSpectrum:
         Tl = np.maximum(T, self.TC)  # the branches beyond TC, kept finite where they are not used
         return np.where(T < self.TB, rise, np.where(T < self.TC, top, np.where(
             T < self.TD, top * self.TC / Tl, top * self.TC * self.TD / Tl ** 2)))
-
-    def SDe(self, T) -> np.ndarray:
-        """Elastic spectral displacement [m] at periods ``T`` [s]: ``Se (T / 2 pi)^2``."""
-        T = self._periods(T)
-        return self.Se(T) * (T / (2.0 * math.pi)) ** 2
 
     def describe(self) -> dict:
         return {"code": self.name, **self.params, "ag": self.ag, "S": self.S, "eta": self.eta, "F0": self.F0,
@@ -148,3 +158,142 @@ def ec8(ag: float, ground: str = "A", spectrum_type: int = 1, damping: float = 5
     params = {"ground": ground, "type": spectrum_type, "damping": damping}
     return ElasticSpectrum("EN 1998-1", float(ag), S, damping_correction(damping), 2.5, TB, TC, TD,
                            min(EC8_T_MAX, TE[ground]), params)
+
+
+def rebuild(site, ag: float | None = None, damping: float | None = None):
+    """The same site's spectrum at another ``ag`` [m/s^2] (the return period's hazard scaled) and/or
+    another ``damping`` [%]: the code's spectrum rebuilt (its soil factor and ``TD`` follow ``ag``),
+    a user's spectrum scaled."""
+    if isinstance(site, TabulatedSpectrum):
+        return site.rebuilt(ag, damping)
+    p = site.params
+    ag = site.ag if ag is None else ag
+    damping = p["damping"] if damping is None else damping
+    if site.name == "NTC 2018":
+        return ntc2018(ag, p["F0"], p["Tc_star"], p["soil"], p["topography"], damping)
+    return ec8(ag, p["ground"], p["type"], damping)
+
+
+#: Longest period [s] and most rows of a user's spectrum file.
+USER_T_MAX, USER_MAX_ROWS = 10.0, 100_000
+
+
+@dataclass(frozen=True)
+class TabulatedSpectrum(_SpectrumBase):
+    """A user's elastic acceleration spectrum at 5 % damping: periods ``T`` [s] from 0, ``Se`` [m/s^2];
+    ``scale`` multiplies it (a stripe of intensity), ``eta`` corrects it for another damping (the codes'
+    factor, applied for T > 0; the peak ground acceleration ``Se(0)`` is not damped)."""
+
+    name: str
+    T: np.ndarray
+    Se0: np.ndarray
+    scale: float = 1.0
+    eta: float = 1.0
+    params: dict = field(default_factory=dict)
+
+    @property
+    def ag(self) -> float:
+        """Peak ground acceleration of the scaled spectrum [m/s^2] (a user's spectrum has ``S = 1``)."""
+        return float(self.Se0[0]) * self.scale
+
+    S = 1.0
+
+    @property
+    def pga(self) -> float:
+        return self.ag
+
+    @property
+    def t_max(self) -> float:  # type: ignore[override]
+        return float(self.T[-1])
+
+    def Se(self, T) -> np.ndarray:
+        T = self._periods(T)
+        return self.scale * np.interp(T, self.T, self.Se0) * np.where(T > 0, self.eta, 1.0)
+
+    def rebuilt(self, ag: float | None = None, damping: float | None = None) -> "TabulatedSpectrum":
+        from dataclasses import replace
+
+        scale = self.scale if ag is None else ag / float(self.Se0[0])
+        eta = self.eta if damping is None else damping_correction(damping)
+        params = {**self.params, "damping": self.params.get("damping", 5.0) if damping is None else damping}
+        return replace(self, scale=scale, eta=eta, params=params)
+
+    def describe(self) -> dict:
+        return {"code": "user spectrum", **self.params, "pga": self.pga, "scale": self.scale, "eta": self.eta,
+                "t_max": self.t_max, "rows": int(len(self.T))}
+
+
+def read_spectrum(path: str, damping: float = 5.0) -> TabulatedSpectrum:
+    """A user's 5 %-damped elastic spectrum from a text file: two columns, period [s] and spectral
+    acceleration [g], separated by spaces, tabs, commas or semicolons; ``#`` starts a comment; periods
+    start at 0 and increase, up to :data:`USER_T_MAX`."""
+    import os
+
+    name = os.path.basename(str(path))
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read(10_000_000)
+    except FileNotFoundError:
+        raise ArchdemInputError(f"spectrum file {path}: no such file") from None
+    except IsADirectoryError:
+        raise ArchdemInputError(f"spectrum file {path}: is a directory") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ArchdemInputError(f"spectrum file {path}: cannot be read as text ({type(exc).__name__})") from None
+    rows = []
+    for k, line in enumerate(text.splitlines(), 1):
+        body = line.split("#", 1)[0].replace(",", " ").replace(";", " ").split()
+        if not body:
+            continue
+        if len(body) != 2:
+            raise ArchdemInputError(f"spectrum file {name}, line {k}: expected two numbers (period [s], Se [g]), "
+                                    f"got {len(body)} fields")
+        try:
+            T, Se = float(body[0]), float(body[1])
+        except ValueError:
+            raise ArchdemInputError(f"spectrum file {name}, line {k}: not numbers: {line.strip()[:60]!r}") from None
+        if not (math.isfinite(T) and math.isfinite(Se) and Se > 0 and Se <= 20):
+            raise ArchdemInputError(f"spectrum file {name}, line {k}: Se must be in (0, 20] g at a finite period, "
+                                    f"got {line.strip()[:60]!r}")
+        if rows and T <= rows[-1][0]:
+            raise ArchdemInputError(f"spectrum file {name}, line {k}: periods must increase, got {T:g} s after "
+                                    f"{rows[-1][0]:g} s")
+        rows.append((T, Se))
+        if len(rows) > USER_MAX_ROWS:
+            raise ArchdemInputError(f"spectrum file {name}: more than {USER_MAX_ROWS} rows")
+    if len(rows) < 2:
+        raise ArchdemInputError(f"spectrum file {name}: needs at least two rows (period [s], Se [g])")
+    arr = np.array(rows)
+    if arr[0, 0] != 0.0:
+        raise ArchdemInputError(f"spectrum file {name}: the first period must be 0 s (Se(0) is the peak ground "
+                                f"acceleration), got {arr[0, 0]:g} s")
+    if arr[-1, 0] > USER_T_MAX:
+        raise ArchdemInputError(f"spectrum file {name}: periods up to {USER_T_MAX:g} s, got {arr[-1, 0]:g} s")
+    return TabulatedSpectrum(name, arr[:, 0], arr[:, 1] * G, 1.0, damping_correction(damping),
+                             {"file": name, "damping": damping})
+
+
+def floor_spectrum(site, T, damping: float, z_ratio: float, T1: float, floors: int,
+                   damping1: float = 5.0) -> np.ndarray:
+    """Elastic acceleration spectrum [m/s^2] at a height ``z_ratio = z / H`` of a building, from its
+    first mode only (period ``T1`` [s], damping ``damping1`` [%], linear mode shape ``psi = z / H``,
+    participation ``gamma = 3 n / (2 n + 1)`` for ``floors = n``), for an element of damping ``damping``
+    [%] (docs/physics/assessment.md#4-mechanisms-at-a-height): the Circolare 2019 floor spectrum::
+
+        a_Z  = Se(T1, xi1) gamma psi sqrt(1 + 0.0004 xi1^2)             floor acceleration
+        A    = 1.1 xi1^-0.5 eta(xi) a_Z                                 (xi1 as a fraction)
+        SeZ  = a_Z A / (a_Z + (A - a_Z)(1 - T / (a T1))^1.6)            T < a T1
+             = A                                                        a T1 <= T < b T1
+             = a_Z A / (a_Z + (A - a_Z)(T / (b T1) - 1)^1.2)            T >= b T1, and >= Se(T, xi)
+
+    with ``a = 0.8``, ``b = 1.1``; never below the ground spectrum for ``T > T1``."""
+    T = np.asarray(T, dtype=float)
+    ground = rebuild(site, damping=damping1)
+    aZ = float(ground.Se(T1)) * (3.0 * floors / (2.0 * floors + 1.0)) * z_ratio * math.sqrt(1 + 0.0004 * damping1 ** 2)
+    A = 1.1 * (damping1 / 100.0) ** -0.5 * damping_correction(damping) * aZ
+    a, b = 0.8, 1.1
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rise = A / (1.0 + (A / aZ - 1.0) * np.clip(1.0 - T / (a * T1), 0, None) ** 1.6)
+        fall = A / (1.0 + (A / aZ - 1.0) * np.clip(T / (b * T1) - 1.0, 0, None) ** 1.2)
+    out = np.where(T < a * T1, rise, np.where(T < b * T1, A, fall))
+    mech = rebuild(site, damping=damping)
+    return np.where(T > T1, np.maximum(out, mech.Se(np.minimum(T, mech.t_max))), out)

@@ -15,6 +15,7 @@ from typing import Callable
 
 from dem.campaign.context import CampaignContext, write_json_atomic
 from dem.campaign.step_analytic import step_analytic
+from dem.campaign.step_assess import step_assess
 from dem.campaign.step_catalogue import step_catalogue
 from dem.campaign.step_lab import step_lab
 from dem.campaign.step_map import step_map
@@ -37,6 +38,7 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
     "shake": (step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar"),
     "record": (step_record, "recorded accelerogram scaled until collapse"),
     "piers": (step_piers, "one arch on piers of growing height: limit analysis and DEM tilt"),
+    "assess": (step_assess, "code-based assessment of the Noh Gumbad vaults, with and without FRP strips"),
 }
 #: Steps run only when asked for (``--steps`` or ``archdem campaign --piers``).
 OPTIONAL_STEPS = ("piers",)

@@ -67,3 +67,44 @@ def test_bad_input_is_refused_in_one_line(call, msg):
     with pytest.raises(ArchdemInputError, match=msg) as exc:
         call()
     assert "\n" not in str(exc.value)
+
+
+def test_a_user_spectrum_file(tmp_path):
+    import numpy as np
+
+    from analytic.spectra import read_spectrum, rebuild
+
+    f = tmp_path / "s.csv"
+    f.write_text("# period, Se\n0, 0.2\n0.2; 0.5\n1.0\t0.1  # tail\n")
+    s = read_spectrum(str(f))
+    assert s.pga == pytest.approx(0.2 * G) and float(s.Se(0.6)) == pytest.approx(0.3 * G)
+    assert float(s.SDe(1.0)) == pytest.approx(0.1 * G / (2 * np.pi) ** 2)
+    s2 = rebuild(s, ag=0.4 * G, damping=10.0)
+    assert float(s2.Se(0.0)) == pytest.approx(0.4 * G)  # the peak ground acceleration is not damped
+    assert float(s2.Se(0.6)) == pytest.approx(0.6 * G * np.sqrt(10 / 15))
+    for text, msg in (("0 0.2\n0.1\n", "line 2: expected two numbers"), ("0.1 0.2\n0.2 0.3\n", "first period must be 0"),
+                      ("0 0.2\n0.3 0.4\n0.2 0.1\n", "line 3: periods must increase"), ("0 0.2\n", "at least two rows"),
+                      ("0 0.2\n1 nan\n", "line 2: Se must be in"), ("0 0.2\n11 0.1\n", "periods up to 10 s"),
+                      ("0 0.2\n1 x\n", "line 2: not numbers")):
+        f.write_text(text)
+        with pytest.raises(ArchdemInputError, match=msg):
+            read_spectrum(str(f))
+    with pytest.raises(ArchdemInputError, match="periods must be in"):
+        s.Se(1.5)
+
+
+def test_the_floor_spectrum_of_the_first_mode():
+    """At T = 0 the floor's peak acceleration; on [0.8 T1, 1.1 T1) the plateau 1.1 xi1^-0.5 eta a_Z;
+    never below the ground spectrum beyond T1."""
+    import numpy as np
+
+    from analytic.spectra import floor_spectrum
+
+    site = ec8(0.25 * G, "B")
+    T1, n, z = 0.4, 3, 0.7
+    aZ = float(site.Se(T1)) * (3 * n / (2 * n + 1)) * z * np.sqrt(1 + 0.0004 * 25)
+    assert float(floor_spectrum(site, 0.0, 5.0, z, T1, n)) == pytest.approx(aZ)
+    top = 1.1 * 0.05 ** -0.5 * aZ
+    assert floor_spectrum(site, [0.33, 0.4, 0.43], 5.0, z, T1, n) == pytest.approx([top] * 3)
+    T = np.linspace(0.41, 4.0, 200)
+    assert np.all(floor_spectrum(site, T, 5.0, z, T1, n) >= site.Se(T) - 1e-12)

@@ -102,10 +102,36 @@ from dem.cli import main
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--q", "1e30"], "q must be a number from 1 to 10"),
     (["assess", "Sh02-Sd020", "--spectrum", "ntc2018", "--ag", "0.2", "--F0", "nan", "--Tc-star", "0.3"], "F0 must be in"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--damping", "-3"], "damping ratio must be a percentage"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "-0.2"], "--ag must be in (0, 3] g"),
+    (["assess", "Sh02-Sd020", "--spectrum", "nope.txt"], "spectrum file nope.txt: no such file"),
+    (["assess", "Sh02-Sd020", "--spectrum", "old.png"], "spectrum file old.png, line 1: expected two numbers"),
+    (["assess", "Sh02-Sd020", "--spectrum", "meshes"], "is a directory"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--limit-state", "SLD"], "invalid choice"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--z-ratio", "0.5"], "--z-ratio, --T1 and --floors"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--z-ratio", "1.5", "--T1", "0.4", "--floors", "3"],
+     "height ratio z/H must be in (0, 1]"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--z-ratio", "0.5", "--T1", "0.4", "--floors", "0"],
+     "number of floors must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--frp", "1964,0.047"], "--frp takes"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--frp", "1964,-1,680"], "FRP thickness must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--frp", "1964,0.047,680,3000"],
+     "FRP design strength must be"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--report", "r.pdf"], "--report must end in .html"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--report", "old.png.html"], "exists"),
+    (["assess", "Sh02-Sd020"], "--spectrum ntc2018|ec8|FILE is needed"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--records", "nope.AT2"], "nope.AT2: no such file"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--records", "nope.AT2", "--match-periods", "1"],
+     "--match-periods takes LO,HI"),
+    (["assess", "noh-gumbad", "--report", "r.html"], "--report does not apply"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--building-damping", "-0.0"],
+     "--building-damping belongs to a mechanism at a height"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--match-periods", "0.1,1"], "belong to --records"),
+    (["assess", "noh-gumbad", "--spectrum", "ec8", "--ag", "-1"], "--ag must be in (0, 3] g"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "old.png").write_bytes(b"old")
+    (tmp_path / "old.png.html").write_text("old")
     (tmp_path / "folder.png").mkdir()
     (tmp_path / "meshes").mkdir()
     (tmp_path / "meshes" / "L1_p0.stl").write_text("old")

@@ -14,9 +14,10 @@ from dem.cli.common import default_of
 
 def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
+    from analytic.assessment import assess
     from analytic.calibration import CALIBRATION_FILE
     from analytic.domain import failure_domain
-    from analytic.kinematic import LinearKinematic, linear_kinematic
+    from analytic.kinematic import Height
     from analytic.spectra import ntc2018
     from analytic.summary import analyse
     from dem.campaign.context import CampaignContext
@@ -44,8 +45,9 @@ def _lib():
                      "contact": default_of(CampaignContext, "contact")},
         "calibrate": {"out": str(CALIBRATION_FILE)},
         "assess": {"soil": default_of(ntc2018, "soil"), "topography": default_of(ntc2018, "topography"),
-                   "damping": default_of(ntc2018, "damping"), "FC": default_of(linear_kinematic, "FC"),
-                   "q": default_of(LinearKinematic.ground_check, "q")},
+                   "damping": default_of(ntc2018, "damping"), "FC": default_of(assess, "FC"),
+                   "q": default_of(assess, "q"), "limit_state": default_of(assess, "limit_state"),
+                   "building_damping": default_of(Height, "damping1"), "engine": s.engine},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
                 "mu_base": default_of(catalogue_map, "mu_base"), "refine": default_of(catalogue_map, "refine"),
@@ -68,6 +70,7 @@ CLI_ONLY = {
     ("domain", "layout"), ("domain", "input"), ("domain", "restitution"), ("domain", "engine"),
     ("rock", "layout"), ("rock", "input"), ("rock", "restitution"),
     ("compare-engines", "friction"), ("compare-engines", "workers"),
+    ("assess", "frp_face"),
 }
 
 # A minimal command line of every sub-command.
