@@ -39,8 +39,9 @@ def response_spectrum(motion: SampledMotion, periods, damping: float = 5.0) -> n
     return np.asarray(r.spec_accel, dtype=float)
 
 
-def significant_window(motion: SampledMotion, bounds: tuple[float, float] = ARIAS_WINDOW) -> SampledMotion:
-    """The part of ``motion`` between the times its Arias intensity reaches ``bounds`` (fractions)."""
+def arias_window(motion: SampledMotion, bounds: tuple[float, float] = ARIAS_WINDOW) -> tuple[int, int]:
+    """Sample indices ``[i0, i1)`` between the times ``motion``'s Arias intensity reaches ``bounds``
+    (fractions of its total)."""
     a = np.asarray(motion.values, float)
     ia = np.concatenate([[0.0], np.cumsum(0.5 * (a[1:] ** 2 + a[:-1] ** 2))])
     if not ia[-1] > 0:
@@ -48,7 +49,13 @@ def significant_window(motion: SampledMotion, bounds: tuple[float, float] = ARIA
     i0 = int(np.searchsorted(ia, bounds[0] * ia[-1]))
     i1 = int(np.searchsorted(ia, bounds[1] * ia[-1])) + 1
     i0, i1 = max(0, i0 - 1), min(len(a), max(i1, i0 + 2))
-    return SampledMotion(a[i0:i1], motion.dt, motion.scale, name=f"{motion.name} [{i0 * motion.dt:.2f}, "
+    return i0, i1
+
+
+def significant_window(motion: SampledMotion, bounds: tuple[float, float] = ARIAS_WINDOW) -> SampledMotion:
+    """The part of ``motion`` between the times its Arias intensity reaches ``bounds`` (fractions)."""
+    i0, i1 = arias_window(motion, bounds)
+    return SampledMotion(motion.values[i0:i1], motion.dt, motion.scale, name=f"{motion.name} [{i0 * motion.dt:.2f}, "
                          f"{(i1 - 1) * motion.dt:.2f}] s", source=motion.source)
 
 
@@ -92,3 +99,32 @@ def match_record(motion: SampledMotion, site, t_range: tuple[float, float]) -> M
     Se = np.asarray(site.Se(T), float)
     k = float(np.exp(np.mean(np.log(Se) - np.log(Sa))))
     return MatchedRecord(w.scaled(k), k, T, Sa, Se)
+
+
+def parse_im(text: str) -> tuple[str, float | None]:
+    """An intensity measure: ``pga`` [m/s^2], ``pgv`` [m/s] or ``sa:T`` (5 %-damped pseudo-spectral
+    acceleration at period T [s], m/s^2)."""
+    t = str(text).strip().lower()
+    if t in ("pga", "pgv"):
+        return t, None
+    if t.startswith("sa:"):
+        try:
+            T = float(t[3:])
+        except ValueError:
+            T = math.nan
+        if not (math.isfinite(T) and 0.01 <= T <= 10):
+            raise ArchdemInputError(f"--im sa:T needs a period T in [0.01, 10] s, got {text!r}")
+        return "sa", T
+    raise ArchdemInputError(f"--im must be pga, pgv or sa:T (T in s), got {text!r}")
+
+
+def intensity_measure(motion: SampledMotion, im: tuple[str, float | None]) -> float:
+    """The value of ``im`` (:func:`parse_im`) for ``motion`` (with its scale)."""
+    kind, T = im
+    a = np.asarray(motion.values, float) * motion.scale
+    if kind == "pga":
+        return float(np.max(np.abs(a)))
+    if kind == "pgv":
+        v = np.concatenate([[0.0], np.cumsum(0.5 * (a[1:] + a[:-1]) * motion.dt)])
+        return float(np.max(np.abs(v)))
+    return float(response_spectrum(motion, [T])[0])

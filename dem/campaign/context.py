@@ -16,6 +16,7 @@ class CampaignContext:
     engine: str = "pybullet"
     quick: bool = True
     workers: int | None = None
+    scheduler: str | None = None  # a Dask scheduler address: every sweep of the campaign runs there
     log: Callable[[str], None] = print
     results: dict = field(default_factory=dict)
     contact: float | str = 1.0  # effective contact of every joint, or "calibrated" (per specimen)

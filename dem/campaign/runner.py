@@ -17,6 +17,7 @@ from dem.campaign.context import CampaignContext, write_json_atomic
 from dem.campaign.step_analytic import step_analytic
 from dem.campaign.step_assess import step_assess
 from dem.campaign.step_catalogue import step_catalogue
+from dem.campaign.step_fragility import step_fragility
 from dem.campaign.step_lab import step_lab
 from dem.campaign.step_map import step_map
 from dem.campaign.step_piers import step_piers
@@ -39,9 +40,10 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
     "record": (step_record, "recorded accelerogram scaled until collapse"),
     "piers": (step_piers, "one arch on piers of growing height: limit analysis and DEM tilt"),
     "assess": (step_assess, "code-based assessment of the Noh Gumbad vaults, with and without FRP strips"),
+    "fragility": (step_fragility, "fragility curves from ensembles of perturbed realisations under sine pulses"),
 }
-#: Steps run only when asked for (``--steps`` or ``archdem campaign --piers``).
-OPTIONAL_STEPS = ("piers",)
+#: Steps run only when asked for (``--steps``, ``archdem campaign --piers`` or ``--fragility``).
+OPTIONAL_STEPS = ("piers", "fragility")
 
 
 def all_steps() -> dict[str, tuple[StepFunc, str]]:

@@ -54,7 +54,8 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
         t = lab.get(s.id)
         imp = Imperfection(cal.edge_loss, cal.edge_loss_sd if t else 0.0)
         ens = tilt_ensemble(s.id, s.arch, imp, n if t else 1, LAB_SEED, studies_dir(ctx) / f"lab-{s.id}.h5",
-                            config=ctx.config, engine=ctx.engine, workers=ctx.workers, resume=True, progress=False)
+                            config=ctx.config, engine=ctx.engine, workers=ctx.workers, scheduler=ctx.scheduler,
+                            resume=True, progress=False)
         modes = Counter(ens.modes)
         mode = modes.most_common(1)[0][0] if modes else "failed"
         row = {

@@ -25,7 +25,8 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
 
     specs, mus, refine = map_plan(ctx)
     res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, studies_dir(ctx) / "map.h5",
-                        workers=ctx.workers, resume=(studies_dir(ctx) / "map.h5").exists(), progress=True,
+                        workers=ctx.workers, scheduler=ctx.scheduler, resume=(studies_dir(ctx) / "map.h5").exists(),
+                        progress=True,
                         refine=refine,
                         settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None,
                         contact={s.id: ctx.contact_of(s) for s in specs})

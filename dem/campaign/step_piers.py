@@ -48,7 +48,8 @@ def step_piers(ctx: CampaignContext, d: Path) -> dict:
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}  # the tilt test's own protocol
     cases = {h: make_case(spec.id, spec.arch, ctx.config, NO_SLIDING_MU, NO_SLIDING_MU, protocol=proto, settings=eng,
                           contact=contact, piers=_piers(spec, h)) for h in heights}
-    res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "piers.h5", workers=ctx.workers, resume=True,
+    res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "piers.h5", workers=ctx.workers,
+                    scheduler=ctx.scheduler, resume=True,
                     study_attrs={"study": "campaign-piers", "config": ctx.config, "quick": ctx.quick})
     rows = []
     for h in heights:

@@ -70,7 +70,8 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
         model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
         r = threshold(model, 1.0, Settings(engine=ctx.engine), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
-                      tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, motion_fn=RecordAtPGA(str(path), t0, t1))
+                      tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
+                      motion_fn=RecordAtPGA(str(path), t0, t1))
         a = r.amplitude_g
         rows.append({"id": s.id, "record": RECORD_FILE, "window_s": f"{t0:.2f}-{t1:.2f}", "pga_record_g": full.pga / G,
                      "lambda_static": lam, "collapse_pga_g": a if a is not None else float("nan"),

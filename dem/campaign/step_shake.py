@@ -41,7 +41,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     rows, figures = [], []
     for s in specs:
         c = ctx.contact_of(s)
-        dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers,
+        dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
                                  settings=Settings(engine=ctx.engine), disc_kw={"contact": c} if c != 1.0 else None,
                                  a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01)
         ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))

@@ -33,7 +33,8 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
     cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng, contact=ctx.contact_of(s))
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
-    res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "tilt.h5", workers=ctx.workers, resume=True,
+    res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "tilt.h5", workers=ctx.workers,
+                    scheduler=ctx.scheduler, resume=True,
                     study_attrs={"study": "campaign-tilt", "config": ctx.config, "quick": ctx.quick})
     by_key = res.by_key
     rows = []

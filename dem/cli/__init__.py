@@ -27,6 +27,7 @@ _COMMANDS = [
     "dynamics_cmd",
     "shake_cmd",
     "compare_cmd",
+    "fragility_cmd",
 ]
 
 

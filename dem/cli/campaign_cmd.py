@@ -23,13 +23,18 @@ def _campaign(args: argparse.Namespace) -> int:
         unknown = [s for s in steps if s not in all_steps()]
         if unknown:
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(all_steps())}")
-    if args.piers:
-        from dem.campaign.runner import default_steps
+    for name in ("piers", "fragility"):
+        if getattr(args, name):
+            from dem.campaign.runner import default_steps
 
-        steps = (steps or default_steps()) + ([] if steps and "piers" in steps else ["piers"])
+            steps = (steps or default_steps()) + ([] if steps and name in steps else [name])
+    if args.scheduler:
+        from dem.studies.sweep import check_scheduler
+
+        check_scheduler(args.scheduler)  # before the output folder is made
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
-                          quick=args.quick, workers=args.workers, contact=args.contact)
+                          quick=args.quick, workers=args.workers, contact=args.contact, scheduler=args.scheduler)
     t0 = time.perf_counter()
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
     from dem.campaign.runner import default_steps
@@ -72,7 +77,11 @@ def register(sub) -> None:
     add_engine_argument(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
-    p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers only when named or with --piers)")
+    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT: run every sweep there")
+    p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers and fragility only when named "
+                                                 "or with --piers / --fragility)")
+    p.add_argument("--fragility", action="store_true",
+                   help="add the fragility study: ensembles under sine pulses (one specimen at 2 Hz when quick)")
     p.add_argument("--piers", action="store_true",
                    help="add the piers study: one arch on piers of growing height, limit analysis and DEM tilt")
     p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")

@@ -234,6 +234,33 @@ def figure_file(path: str, option: str = "--plot"):
     return writable_file(p, overwrite=False)
 
 
+def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[str, bool]:
+    """``(path, resume)`` of a study command's ``--out`` / ``--resume`` (one rule for every study):
+    a mistyped ``--resume`` name is refused rather than starting a new study under it."""
+    import os
+
+    from specimens.io import unique_run_path
+
+    if args.resume is not None and args.out:
+        raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
+    if args.resume is not None and not os.path.exists(args.resume):
+        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
+    if args.resume:
+        return args.resume, True
+    if args.out:
+        return args.out, False
+    return str(unique_run_path(can_make_dir(default_dir), stem)), False
+
+
+def add_friction_arguments(p: argparse.ArgumentParser, what: str = "") -> None:
+    """``--mu-joint`` and ``--mu-base`` with the settings' defaults."""
+    from dem.core.settings import Settings
+
+    for name, text in (("mu_joint", "block-block"), ("mu_base", "block-base")):
+        p.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, default=default_of(Settings, name),
+                       help=f"{what}{text} friction (default {default_of(Settings, name):g})")
+
+
 def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
 

@@ -39,7 +39,8 @@ def dem_domain(args: argparse.Namespace) -> int:
     a_max = dem_a_max if a_max is None or a_max == default_of(failure_domain, "a_max_ratio") else float(a_max)
     res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
-                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch))
+                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
+                             scheduler=getattr(args, "scheduler", None))
     if args.plot:
         from dem.plotting.shake import plot_domain_over_analytic
 

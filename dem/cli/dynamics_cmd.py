@@ -123,6 +123,8 @@ def _run_domain(args: argparse.Namespace) -> int:
         except ImportError:
             raise ArchdemInputError("the DEM failure domain is not available yet") from None
         return int(dem_domain(args) or 0)
+    if args.scheduler:
+        raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
     from analytic.domain import failure_domain
     from analytic.impact import post_impact
 
@@ -238,6 +240,7 @@ def register(sub) -> None:
     p.add_argument("--tol", type=float, default=default_of(failure_domain, "tol"),
                    help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
+    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (with --engine dem)")
     p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
                    help="DEM: discrete configuration")

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
 
 from dem.cli.common import (
@@ -14,6 +13,7 @@ from dem.cli.common import (
     piers_from_args,
     print_json,
     resolve_contact,
+    study_path,
     workers_option,
     writable_dir,
 )
@@ -43,7 +43,6 @@ def _run(args: argparse.Namespace) -> int:
     from dem.core.settings import Settings
     from dem.experiments.friction_map import catalogue_map, parse_mu_grid
     from dem.studies.sweep import StudyInterrupted
-    from specimens.io import unique_run_path
 
     specs = _specimens(args)
     mus = parse_mu_grid(args.mu)
@@ -60,17 +59,7 @@ def _run(args: argparse.Namespace) -> int:
     piers = piers_from_args(args)
     for s in specs if piers is not None else ():
         piers.check(s.arch)
-    if args.resume is not None and args.out:
-        raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
-    # a mistyped study name would otherwise start a whole new study under that name
-    if args.resume is not None and not os.path.exists(args.resume):
-        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
-    if args.resume:
-        path, resume = args.resume, True
-    elif args.out:
-        path, resume = args.out, False
-    else:
-        path, resume = unique_run_path(writable_dir("runs/map"), f"map-{args.config}"), False
+    path, resume = study_path(args, "runs/map", f"map-{args.config}")
     if args.plot:
         writable_dir(args.plot)
     try:

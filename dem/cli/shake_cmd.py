@@ -9,6 +9,7 @@ import sys
 from dem.cli.common import (
     add_arch_arguments,
     add_engine_argument,
+    add_friction_arguments,
     arch_from_args,
     can_make_dir,
     default_of,
@@ -116,7 +117,8 @@ def _run_threshold(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
         raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
     res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
-                    a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers)
+                    a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers,
+                    scheduler=args.scheduler)
     a_max = res.a_range_g[1]
     s = {"id": label, "lambda": lam, "config": args.config, "contact": model.source.get("contact", 1.0),
          "mu_joint": settings.mu_joint, "mu_base": settings.mu_base, **res.summary()}
@@ -148,10 +150,7 @@ def _common(p: argparse.ArgumentParser) -> None:
 
     add_arch_arguments(p)
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
-    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=default_of(Settings, "mu_joint"),
-                   help=f"block-block friction (default {default_of(Settings, 'mu_joint'):g})")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(Settings, "mu_base"),
-                   help=f"block-base friction (default {default_of(Settings, 'mu_base'):g})")
+    add_friction_arguments(p)
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
@@ -198,6 +197,7 @@ def register(sub) -> None:
     q.add_argument("--tol", type=float, default=default_of(threshold, "tol"),
                    help=f"relative bisection tolerance (default {default_of(threshold, 'tol'):g})")
     q.add_argument("--workers", type=workers_option, default=None, help="processes for the scan (default: all cores)")
+    q.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
     q.set_defaults(func=_run_threshold)
 
     r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")

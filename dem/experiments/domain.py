@@ -11,7 +11,7 @@ from specimens.errors import ArchdemInputError
 def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "glued", mu_joint: float | None = None,
                        mu_base: float | None = None, a_max_ratio: float = 6.0, scan_ratio: float = 1.15,
                        tol: float = 0.01, workers: int | None = None, disc_kw: dict | None = None,
-                       settings=None, protocol=None) -> dict:
+                       settings=None, protocol=None, scheduler: str | None = None) -> dict:
     """DEM failure domain of ``arch`` (one-cycle plain sines at ``freqs`` [Hz]).
 
     The amplitude scan runs from the static onset ``lambda g`` (LP with the same friction;
@@ -31,7 +31,7 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
         raise ArchdemInputError(f"{label}: the arch has no positive static collapse multiplier (lambda = {lam})")
     st = settings or Settings(mu_joint=mu_j, mu_base=mu_b)
     out = failure_domain(model, freqs, st, protocol, workers=workers, a_min_g=lam, a_max_g=a_max_ratio * lam,
-                         scan_ratio=scan_ratio, tol=tol)
+                         scan_ratio=scan_ratio, tol=tol, scheduler=scheduler)
     out.update({"id": label, "lambda": lam, "config": config, "mu_joint": mu_j, "mu_base": mu_b,
                 "input": "sine0", "a_range_g": [lam, a_max_ratio * lam]})
     return out

@@ -6,7 +6,7 @@ again around 0.78-0.9 g; docs/physics/dem.md#10-shake-thresholds-and-dem-failure
 bisection may return either edge of a survival window. :func:`threshold` therefore
 
 1. **scans** amplitudes ``a_min .. a_max`` with geometric spacing (ratio ``scan_ratio``), in
-   parallel (``concurrent.futures.ProcessPoolExecutor``, all cores by default);
+   parallel (local processes, all cores by default, or a Dask cluster: :func:`dem.studies.sweep.executor`);
 2. **bisects** (geometric midpoints) the lowest bracket survival -> collapse until
    ``hi / lo - 1 <= tol`` (1 % by default); the answer is the upper end ``hi`` (a simulated
    amplitude that collapsed), as for the tilt test. With several processes the bisection runs
@@ -28,7 +28,6 @@ from __future__ import annotations
 import math
 import os
 import time
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
@@ -41,7 +40,6 @@ from dem.core.settings import Settings
 from dem.experiments.shake import ShakeProtocol, collapses
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
-from specimens.processes import die_with_parent
 
 SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
 
@@ -122,10 +120,12 @@ def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
     return np.geomspace(a_min_g, a_max_g, max(n, 2))
 
 
-def _map(fn, jobs: list, workers: int) -> list:
-    if workers <= 1 or len(jobs) <= 1:
+def _map(fn, jobs: list, workers: int, scheduler: str | None = None) -> list:
+    if not scheduler and (workers <= 1 or len(jobs) <= 1):
         return [fn(j) for j in jobs]
-    with ProcessPoolExecutor(max_workers=min(workers, len(jobs)), initializer=die_with_parent) as ex:
+    from dem.studies.sweep import executor
+
+    with executor(min(workers, len(jobs)), scheduler) as (ex, _):
         return list(ex.map(fn, jobs))
 
 
@@ -140,8 +140,8 @@ def _lowest_bracket(scan: list) -> int | None:
     return -1
 
 
-def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
-                     max_sims: int) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
+def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, max_sims: int,
+                     scheduler: str | None = None) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
     """Outcomes of the scan (in grid order) and of the bisection of its lowest survival ->
     collapse bracket (in order; geometric midpoints until ``hi / lo - 1 <= tol`` or ``max_sims``
     runs in all), and the final ``(lo, hi, run at hi)``; no bisection and None when the lowest
@@ -178,12 +178,14 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float,
     def result():
         return list(scan), bis, None if bracket is None else (bracket.lo, bracket.hi, bracket.hi_run)
 
-    if workers <= 1:
+    if workers <= 1 and not scheduler:
         scan = [_run_one(job(a)) for a in grid]
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
         return result()
-    with ProcessPoolExecutor(max_workers=min(workers, n), initializer=die_with_parent) as ex:
+    from dem.studies.sweep import executor
+
+    with executor(min(workers, n), scheduler) as (ex, workers):
         running: dict = {}  # future -> scan index, or None for the bisection's run
         nxt = 0
         while True:
@@ -241,12 +243,12 @@ def static_onset(model: Model, settings: Settings) -> float:
 def threshold(target, freq: float, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
               a_min_g: float | None = None, a_max_g: float | None = None, scan_ratio: float = 1.15, tol: float = 0.01,
               workers: int | None = None, motion_fn: Callable[[float, float], GroundMotion] = sine_motion,
-              max_sims: int = 60, config: str = "glued") -> ThresholdResult:
+              max_sims: int = 60, config: str = "glued", scheduler: str | None = None) -> ThresholdResult:
     """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target`` (a specimen id,
     Specimen, PointedArch, Assembly or Model, see :func:`dem.core.model.as_model`); see the module
     docstring. The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`;
     nothing moves below it) to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``); ``workers``: processes for the
-    scan (default all cores, 1 = serial).
+    scan (default all cores, 1 = serial); ``scheduler``: a Dask scheduler address to run on instead.
     """
     model = as_model(target, config=config)
     if not (math.isfinite(freq) and freq > 0):
@@ -261,7 +263,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
     a_max_g = SCAN_TOP * a_min_g if a_max_g is None else a_max_g
     grid = scan_grid(a_min_g, a_max_g, scan_ratio)
     job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
-    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims)
+    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims, scheduler)
     runs = scan + bis
     if not any(r.collapsed for r in scan):
         return ThresholdResult(float(freq), None, None, _bands(runs, None), tuple(runs), scan_ratio, tol,
@@ -295,9 +297,10 @@ def _threshold_job(args) -> ThresholdResult:
 
 
 def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | None = None,
-                   protocol: ShakeProtocol | None = None, workers: int | None = None, **kw) -> dict:
+                   protocol: ShakeProtocol | None = None, workers: int | None = None, scheduler: str | None = None,
+                   **kw) -> dict:
     """DEM failure domain: :func:`threshold` at every frequency [Hz], in parallel over the grid
-    (``workers`` processes, default all cores). ``kw`` go to :func:`threshold` (amplitude range,
+    (``workers`` processes, default all cores; or a Dask ``scheduler``). ``kw`` go to :func:`threshold` (amplitude range,
     scan ratio, tol). Returns a dict shaped like the analytic domain JSON: ``points`` (``x`` [Hz],
     ``amplitude_g``, ``mode``: the collapse phase mapped to the analytic names), ``bands``
     (``x``, ``from_g``, ``to_g``, ``outcome``, ``collapse``) and ``thresholds`` (full summaries)."""
@@ -308,7 +311,7 @@ def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | No
     protocol = protocol or ShakeProtocol()
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()
-    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers)
+    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers, scheduler)
     names = {"before-first-rebound": "first-half-cycle", "after-first-rebound": "after-impact"}
     points, bands = [], []
     for r in res:

@@ -41,10 +41,12 @@ counts as not stored.
 One process writes a study at a time: it holds ``.NAME.lock`` beside the file (see
 :func:`lock_path`), and a second one is refused at once instead of interleaving its cases.
 On a Dask cluster a worker that dies is retried by Dask; a case that kills workers
-repeatedly (``KilledWorker``) is recorded as failed.
+repeatedly (``KilledWorker``) is recorded as failed; a lost scheduler stops the study with
+:class:`StudyInterrupted` (the finished cases are stored; resume it, on the cluster or locally).
 """
 from __future__ import annotations
 
+import contextlib
 import datetime as _dt
 import hashlib
 import importlib
@@ -420,6 +422,27 @@ class _DaskPool:
         self.client.close()
 
 
+@contextlib.contextmanager
+def executor(workers: int, scheduler: str | None = None) -> Iterator[tuple[Any, int]]:
+    """``(executor, slots)``: a ``concurrent.futures`` executor of ``workers`` local processes (that end
+    with their parent), or a Dask cluster's (``scheduler``), whose slots are its workers' threads;
+    for the sweeps that schedule runs themselves (threshold scans and bisections)."""
+    if scheduler:
+        check_scheduler(scheduler)
+        pool = _DaskPool(scheduler)
+        try:
+            yield pool.client.get_executor(pure=False), max(1, sum(pool.client.nthreads().values()))
+        finally:
+            pool.close(True)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    from specimens.processes import die_with_parent
+
+    with ProcessPoolExecutor(max_workers=workers, initializer=die_with_parent) as ex:
+        yield ex, workers
+
+
 def _crash_error(exc: BaseException) -> str | None:
     """Error text if ``exc`` means 'the worker died running this case' on a Dask cluster."""
     try:
@@ -514,6 +537,10 @@ def _execute(todo, func, path, workers, scheduler, progress) -> None:
                     f"resume the study to run the other {len(todo) - n_ok - n_failed}") from None
             except Exception as exc:  # noqa: BLE001
                 msg = _crash_error(exc)
+                if msg is None and scheduler:  # case errors come back as results: this is the cluster
+                    raise StudyInterrupted(
+                        f"lost the Dask cluster ({type(exc).__name__}); {n_ok + n_failed} finished cases of this run "
+                        f"are stored in {path}; resume the study to run the other {len(todo) - n_ok - n_failed}") from None
                 if msg is None:
                     raise
                 out = {"status": "failed", "results": {}, "error": msg, "wall": math.nan, "worker": ""}

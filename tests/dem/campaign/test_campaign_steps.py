@@ -568,3 +568,21 @@ def test_a_run_with_other_parameters_is_refused_and_writes_nothing(campaign, cha
     with pytest.raises(ArchdemInputError, match="other parameters"):
         run_campaign(CampaignContext(out=out, workers=1, log=log.append, **kw))
     assert log == [] and _snapshot(out) == before
+
+
+def test_a_campaign_step_on_a_local_dask_cluster(tmp_path):
+    """``--scheduler``: the campaign's sweeps run on a real local cluster, with the local results."""
+    distributed = pytest.importorskip("distributed")
+
+    def tilt_rows(out, scheduler=None):
+        ctx = CampaignContext(out=out, specimens=select_specimens("Sh02-Sd020"), quick=True, workers=2,
+                              log=lambda s: None, scheduler=scheduler)
+        run_campaign(ctx, ["tilt"])
+        with open(out / "tilt" / "tilt.csv", newline="") as fh:
+            return list(csv.DictReader(fh))
+
+    local = tilt_rows(tmp_path / "local")
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None) as cl:
+        remote = tilt_rows(tmp_path / "dask", cl.scheduler_address)
+    keep = [k for k in local[0] if "wall" not in k]
+    assert [{k: r[k] for k in keep} for r in remote] == [{k: r[k] for k in keep} for r in local]

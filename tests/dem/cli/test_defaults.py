@@ -24,6 +24,7 @@ def _lib():
     from dem.core.settings import Settings
     from dem.experiments.compare_engines import compare
     from dem.experiments.domain import dem_failure_domain
+    from dem.experiments.fragility import DEFAULT_FRICTION_COV
     from dem.experiments.friction_map import catalogue_map
     from dem.experiments.shake import ShakeProtocol
     from dem.experiments.thresholds import threshold
@@ -58,6 +59,8 @@ def _lib():
         "threshold": {**sim, "tail": sp.tail, "load": sp.load,
                       "scan_ratio": default_of(threshold, "scan_ratio"), "tol": default_of(threshold, "tol")},
         "animate": {"fps": default_of(animate, "fps"), "frames": default_of(animate, "max_frames")},
+        "fragility": {"config": default_of(discretise, "config"), "mu_joint": s.mu_joint, "mu_base": s.mu_base,
+                      "engine": s.engine, "friction_cov": DEFAULT_FRICTION_COV},
         "compare-engines": {"config": default_of(compare, "config"), "engines": ",".join(default_of(compare, "engines"))},
     }
 
@@ -70,7 +73,7 @@ CLI_ONLY = {
     ("domain", "layout"), ("domain", "input"), ("domain", "restitution"), ("domain", "engine"),
     ("rock", "layout"), ("rock", "input"), ("rock", "restitution"),
     ("compare-engines", "friction"), ("compare-engines", "workers"),
-    ("assess", "frp_face"),
+    ("assess", "frp_face"), ("fragility", "seed"),
 }
 
 # A minimal command line of every sub-command.
@@ -78,7 +81,8 @@ ARGV = {
     "specimens": [], "mesh": ["Sh02-Sd015", "--out", "o"], "draw": ["Sh02-Sd015", "--out", "o.png"],
     "analytic": ["Sh02-Sd015"], "assess": ["Sh02-Sd015", "--spectrum", "ec8"], "calibrate": [], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
-    "threshold": ["Sh02-Sd015", "--sine", "4"], "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
+    "threshold": ["Sh02-Sd015", "--sine", "4"], "fragility": ["Sh02-Sd015", "--realizations", "1"],
+    "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
 }
 
 

@@ -161,3 +161,15 @@ def test_arch_threshold_no_sliding_2hz_above_static_onset():
     # docs/validation.md#3-single-block). Measured: DEM 0.3973 g, four-bar 0.4251 g (-6.5 %)
     assert mode == "after-impact"
     assert r.amplitude_g == pytest.approx(a_fb / G, rel=0.10)
+
+
+def test_a_threshold_on_a_local_dask_cluster_is_the_local_one():
+    """A real scheduler and two worker processes run the scan and the bisection: the same runs."""
+    distributed = pytest.importorskip("distributed")
+    block = single_block(0.1, 0.4)
+    st = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, planar=True)
+    local = threshold(block, 2.0, st, a_min_g=0.27, a_max_g=0.4, workers=2)
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None) as cl:
+        remote = threshold(block, 2.0, st, a_min_g=0.27, a_max_g=0.4, scheduler=cl.scheduler_address)
+    assert remote.amplitude_g == local.amplitude_g and remote.bracket_g == local.bracket_g
+    assert [(r.amplitude_g, r.collapsed) for r in remote.runs] == [(r.amplitude_g, r.collapsed) for r in local.runs]

@@ -326,3 +326,26 @@ def test_a_folder_is_not_a_study_file(tmp_path):
     bad.write_text("not hdf5\n")
     with pytest.raises(ArchdemInputError, match=r"not a readable HDF5 study file \([^\n]*\)$"):
         run_study(_cases(1), FUNC, bad, resume=True, progress=False)
+
+
+def test_a_scheduler_lost_mid_study_leaves_a_resumable_study(tmp_path):
+    """The cluster goes away while cases run: the study stops with StudyInterrupted (one line for the
+    CLI), the finished cases are in the file, and a resume on the local pool completes it."""
+    distributed = pytest.importorskip("distributed", reason=NO_DASK)
+    cases = _cases(8, sleep=0.6)
+    p = tmp_path / "s.h5"
+    cluster = distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None)
+
+    def stop_later():
+        while not p.exists() or len(load_study(p).by_key) < 2:
+            time.sleep(0.1)
+        cluster.close()
+
+    threading.Thread(target=stop_later, daemon=True).start()
+    with pytest.raises(StudyInterrupted, match="lost the Dask cluster") as exc:
+        run_study(cases, FUNC, p, scheduler=cluster.scheduler_address, progress=False)
+    assert "\n" not in str(exc.value)
+    done = len(load_study(p).by_key)
+    assert 2 <= done < len(cases)
+    res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
+    assert [r.status for r in res] == ["ok"] * len(cases)
