@@ -72,3 +72,31 @@ def rocking_frame(b: float, h: float, span: float, beam_height: float, density: 
                    for k, (name, a, bb, s, y, n) in enumerate(spec))
     return Frame(float(b), float(h), float(span), float(beam_height), float(density), float(beam_density),
                  float(width), bodies, joints)
+
+
+@dataclass(frozen=True)
+class Block:
+    """A rectangular block ``2b`` wide and ``2h`` tall [m], ``width`` out of plane, on the base joint
+    ``B0`` (its bottom face, from the left corner to the right)."""
+
+    b: float
+    h: float
+    width: float
+    bodies: tuple[Body, ...]
+    joints: tuple[Joint, ...]
+    contact: float = 1.0
+
+    @property
+    def length_scale(self) -> float:
+        return 2.0 * self.h
+
+
+def single_block(b: float, h: float, density: float = DEFAULT_DENSITY, width: float = 0.1) -> Block:
+    """The block of half-width ``b`` and half-height ``h`` [m] standing on y = 0."""
+    for name, v in (("half-width b", b), ("half-height h", h), ("density", density), ("width", width)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise ArchdemInputError(f"block {name} must be a positive number, got {v!r}")
+    o = np.array([[-b, 0.0], [b, 0.0], [b, 2 * h], [-b, 2 * h]], float)
+    body = _make_body(0, "B", ("B",), o, (o,), polygon_properties(o), density, width)
+    joint = Joint(0, "B0", -1, 0, np.array([-b, 0.0]), np.array([b, 0.0]), np.array([0.0, 1.0]), 0.0)
+    return Block(float(b), float(h), float(width), (body,), (joint,))

@@ -28,6 +28,7 @@ _COMMANDS = [
     "shake_cmd",
     "compare_cmd",
     "fragility_cmd",
+    "modes_cmd",
 ]
 
 

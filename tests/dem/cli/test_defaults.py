@@ -61,6 +61,7 @@ def _lib():
         "animate": {"fps": default_of(animate, "fps"), "frames": default_of(animate, "max_frames")},
         "fragility": {"config": default_of(discretise, "config"), "mu_joint": s.mu_joint, "mu_base": s.mu_base,
                       "engine": s.engine, "friction_cov": DEFAULT_FRICTION_COV},
+        "modes": {"config": default_of(discretise, "config")},
         "compare-engines": {"config": default_of(compare, "config"), "engines": ",".join(default_of(compare, "engines"))},
     }
 
@@ -73,7 +74,7 @@ CLI_ONLY = {
     ("domain", "layout"), ("domain", "input"), ("domain", "restitution"), ("domain", "engine"),
     ("rock", "layout"), ("rock", "input"), ("rock", "restitution"),
     ("compare-engines", "friction"), ("compare-engines", "workers"),
-    ("assess", "frp_face"), ("fragility", "seed"),
+    ("assess", "frp_face"), ("fragility", "seed"), ("modes", "count"),
 }
 
 # A minimal command line of every sub-command.
@@ -82,6 +83,7 @@ ARGV = {
     "analytic": ["Sh02-Sd015"], "assess": ["Sh02-Sd015", "--spectrum", "ec8"], "calibrate": [], "campaign": [], "tilt": ["Sh02-Sd015"], "map": [], "record": ["f.AT2"],
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
     "threshold": ["Sh02-Sd015", "--sine", "4"], "fragility": ["Sh02-Sd015", "--realizations", "1"],
+    "modes": ["Sh02-Sd015", "--kn", "1e8"],
     "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
 }
 

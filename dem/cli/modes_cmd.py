@@ -1,0 +1,80 @@
+"""``archdem modes``: natural frequencies and mode shapes of an arch (on piers or not) or a block on
+compliant joints, at rest under gravity (docs/physics/modes.md)."""
+from __future__ import annotations
+
+import argparse
+
+from dem.cli.common import (
+    add_arch_arguments,
+    arch_from_args,
+    discretisation_kwargs,
+    figure_file,
+    piers_from_args,
+    print_json,
+)
+from specimens.errors import ArchdemInputError
+
+#: Most modes a command prints or stores.
+MAX_COUNT = 10_000
+
+
+def _structure(args: argparse.Namespace):
+    from specimens.blocks import DEFAULT_DENSITY, discretise
+    from specimens.frame import single_block
+
+    if args.block is not None:
+        if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
+            raise ArchdemInputError("give either --block B H or an arch, not both")
+        if piers_from_args(args) is not None or args.contact is not None:
+            raise ArchdemInputError("--pier-* and --contact belong to an arch, not to --block")
+        b, h = args.block
+        return (f"block-b{b:g}-h{h:g}", single_block(b, h, args.density or DEFAULT_DENSITY, args.width or 0.1))
+    if args.id is None and args.Ri is None and args.Sh is None:
+        raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")
+    label, arch = arch_from_args(args)
+    return label, discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
+
+
+def _run(args: argparse.Namespace) -> int:
+    from analytic.modes import modes
+
+    if not (isinstance(args.count, int) and 1 <= args.count <= MAX_COUNT):
+        raise ArchdemInputError(f"--count must be a whole number from 1 to {MAX_COUNT}, got {args.count!r}")
+    if args.plot:
+        figure_file(args.plot)
+    label, structure = _structure(args)
+    res = modes(structure, args.kn, args.ks)
+    out = {"id": label, **res.describe(args.count)}
+    if args.plot:
+        from dem.plotting.modes import save_mode_shapes
+
+        save_mode_shapes(structure, res, args.plot, title=label)
+        out["plot"] = args.plot
+    if args.json:
+        print_json(out)
+        return 0
+    f = res.frequencies_hz[:args.count]
+    print(f"{label}: {len(res.frequencies_hz)} modes on joints kn {res.kn:.3g} Pa/m, ks {res.ks:.3g} Pa/m"
+          + (f" ({res.unstable} unstable under gravity)" if res.unstable else ""))
+    print("  " + "  ".join(f"{x:.4g}" for x in f) + " Hz")
+    return 0
+
+
+def register(sub) -> None:
+    from analytic.modes import KS_OVER_KN
+    from dem.cli.common import default_of
+    from specimens.blocks import discretise
+
+    p = sub.add_parser("modes", help="natural frequencies and mode shapes on compliant joints",
+                       description=__doc__.splitlines()[0])
+    add_arch_arguments(p)
+    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
+                   help="a rectangular block of half-width B and half-height H [m] instead of an arch")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--kn", type=float, required=True, help="normal joint stiffness per unit area [Pa/m]")
+    p.add_argument("--ks", type=float, default=None,
+                   help=f"shear joint stiffness per unit area [Pa/m] (default {KS_OVER_KN:.3f} kn)")
+    p.add_argument("--count", type=int, default=80, help="modes printed (default 80)")
+    p.add_argument("--plot", default=None, metavar="FILE.png", help="the first mode shapes drawn on the structure")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=_run)
