@@ -155,6 +155,21 @@ MAX_WORKERS = 256
 MAX_VOUSSOIRS = 100
 
 
+def block_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
+    """``(B, H)`` [m] of ``--block`` (half-width, half-height) when given; refused beside an arch, its
+    piers or its contact; with neither a block nor an arch, one line asking for one."""
+    arch_given = args.id is not None or any(getattr(args, k, None) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc"))
+    if args.block is None:
+        if not arch_given:
+            raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")
+        return None
+    if arch_given:
+        raise ArchdemInputError("give either --block B H or an arch, not both")
+    if piers_from_args(args) is not None or getattr(args, "contact", None) is not None:
+        raise ArchdemInputError("--pier-* and --contact belong to an arch, not to --block")
+    return float(args.block[0]), float(args.block[1])
+
+
 def workers_option(text: str) -> int:
     """``--workers``: a whole number of processes, 1 to MAX_WORKERS (the same rule on every command)."""
     try:

@@ -12,11 +12,11 @@ from dem.cli.common import (
     add_engine_argument,
     add_friction_arguments,
     arch_from_args,
+    block_from_args,
     default_of,
     discretisation_kwargs,
     figure_file,
     parse_grid,
-    piers_from_args,
     print_json,
     study_path,
     workers_option,
@@ -31,18 +31,13 @@ def _structure(args: argparse.Namespace):
     from dem.experiments.fragility import arch_structure, block_structure
     from specimens.blocks import DEFAULT_DENSITY, discretise
 
-    if args.block is not None:
-        if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
-            raise ArchdemInputError("give either --block B H or an arch, not both")
-        if piers_from_args(args) is not None or args.contact is not None:
-            raise ArchdemInputError("--pier-* and --contact belong to an arch, not to --block")
-        b, h = args.block
+    block = block_from_args(args)
+    if block is not None:
+        b, h = block
         width = args.width if args.width is not None else 0.1
         density = args.density if args.density is not None else DEFAULT_DENSITY
         model = single_block(2 * b, 2 * h, width, density)  # checks the sizes
         return f"block-b{b:g}-h{h:g}", block_structure(2 * b, 2 * h, width, density), model
-    if args.id is None and args.Ri is None and args.Sh is None:
-        raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")
     label, arch = arch_from_args(args)
     kw = discretisation_kwargs(args, arch)
     asm = discretise(arch, config=args.config, **kw)

@@ -7,9 +7,9 @@ import argparse
 from dem.cli.common import (
     add_arch_arguments,
     arch_from_args,
+    block_from_args,
     discretisation_kwargs,
     figure_file,
-    piers_from_args,
     print_json,
 )
 from specimens.errors import ArchdemInputError
@@ -22,15 +22,11 @@ def _structure(args: argparse.Namespace):
     from specimens.blocks import DEFAULT_DENSITY, discretise
     from specimens.frame import single_block
 
-    if args.block is not None:
-        if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
-            raise ArchdemInputError("give either --block B H or an arch, not both")
-        if piers_from_args(args) is not None or args.contact is not None:
-            raise ArchdemInputError("--pier-* and --contact belong to an arch, not to --block")
-        b, h = args.block
-        return (f"block-b{b:g}-h{h:g}", single_block(b, h, args.density or DEFAULT_DENSITY, args.width or 0.1))
-    if args.id is None and args.Ri is None and args.Sh is None:
-        raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")
+    block = block_from_args(args)
+    if block is not None:
+        b, h = block
+        density = DEFAULT_DENSITY if args.density is None else args.density
+        return f"block-b{b:g}-h{h:g}", single_block(b, h, density, 0.1 if args.width is None else args.width)
     label, arch = arch_from_args(args)
     return label, discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
 

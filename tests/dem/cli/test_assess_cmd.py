@@ -100,17 +100,9 @@ def test_the_noh_gumbad_example(capsys):
     assert "its own geometry" in capsys.readouterr().err
 
 
-def test_records_matched_and_shaken(tmp_path, capsys):
+def test_records_matched_and_shaken(short_records, capsys):
     """Two short records (CSV) matched to the site and run on the DEM; the code's verdict beside the DEM's."""
-    import numpy as np
-
-    files = []
-    for k, f in enumerate((2.0, 3.0)):
-        t = np.arange(0, 2.0, 0.005)
-        a = 0.2 * np.sin(2 * np.pi * f * t) * np.exp(-((t - 1.0) / 0.4) ** 2)
-        p = tmp_path / f"r{k}.csv"
-        p.write_text("time [s], acc [g]\n" + "".join(f"{x:.3f}, {y:.6f}\n" for x, y in zip(t, a)))
-        files.append(str(p))
+    files = short_records
     d = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", "ec8", "--ag", "0.1", "--records", *files,
                        "--workers", "1", "--json"])
     rec = d["records"]

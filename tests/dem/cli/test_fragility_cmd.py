@@ -1,7 +1,6 @@
 """``archdem fragility``: sine stripes and a record suite, the JSON answer, the tables, resume."""
 import json
 
-import numpy as np
 import pytest
 
 from dem.cli import main
@@ -31,14 +30,8 @@ def test_sine_stripes_json_tables_and_resume(tmp_path, capsys):
     assert again["points"] == d["points"]
 
 
-def test_a_record_suite_in_stripes_of_pga_and_sa(tmp_path, capsys):
-    files = []
-    for k, f in enumerate((2.0, 3.0)):
-        t = np.arange(0, 2.0, 0.005)
-        a = 0.2 * np.sin(2 * np.pi * f * t) * np.exp(-((t - 1.0) / 0.3) ** 2)
-        p = tmp_path / f"r{k}.csv"
-        p.write_text("time [s], acc [g]\n" + "".join(f"{x:.3f}, {y:.6f}\n" for x, y in zip(t, a)))
-        files.append(str(p))
+def test_a_record_suite_in_stripes_of_pga_and_sa(tmp_path, short_records, capsys):
+    files = short_records
     for im in ("pga", "sa:0.4"):
         d = _json(capsys, ["fragility", *BLOCK, "--records", *files, "--im", im, "--stripes", "0.1,0.8",
                            "--realizations", "2", "--workers", "2", "--out", str(tmp_path / f"{im[:2]}.h5"), "--json"])

@@ -6,7 +6,6 @@ import pytest
 
 from analytic.domain import failure_domain
 from analytic.rocking_block import RockingBlock
-from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.fragility import (
     Perturbation,
@@ -88,4 +87,3 @@ def test_bad_ensembles_are_refused():
         fragility("b", BLOCK, RIGID, Perturbation(), groups, 0, 1, "x.h5")
     with pytest.raises(ArchdemInputError, match="friction coefficient of variation"):
         Perturbation(friction_cov=math.nan)
-    single_block(0.1, 0.4)  # the block itself is sound
