@@ -8,7 +8,8 @@ With ``delta(p) = x_b(p) - x_a(p)`` the relative displacement of the joint's two
 
     E = 1/2 w integral over the contact [ k_n (n . delta)^2 + k_s (t . delta)^2 ] ds
 
-is exact at second order with two Gauss points (``delta`` is linear along the joint). **Gravity**
+is exact at second order with two Gauss points (``delta`` is linear along the joint); by default the
+springs are lumped at the contact's two ends instead, as the DEM engines' corner contacts carry them. **Gravity**
 acts through the springs' preload: the assembly first settles under its weight (``K q0 = F``) and
 the springs' forces ``f(s)`` at rest turn with the bodies; at second order a body turning by
 ``theta`` moves its point ``p`` by ``-theta^2 / 2 (p - c)``, which adds ``-f . (p - c_b)`` (and
@@ -25,8 +26,10 @@ import numpy as np
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
-#: Gauss points and weights on [0, 1] (exact for the quadratic integrand of a joint).
-_GAUSS = ((0.5 - 0.5 / math.sqrt(3.0), 0.5), (0.5 + 0.5 / math.sqrt(3.0), 0.5))
+#: Where a joint's springs sit, as points and weights on [0, 1]: a continuous bed (two Gauss points, exact
+#: for its quadratic integrand), or lumped at the contact's two ends as the DEM engines' corner contacts are.
+SPRINGS = {"bed": ((0.5 - 0.5 / math.sqrt(3.0), 0.5), (0.5 + 0.5 / math.sqrt(3.0), 0.5)),
+           "ends": ((0.0, 0.5), (1.0, 0.5))}
 #: Shear over normal joint stiffness when only k_n is given: (5/6) G / E of an isotropic material
 #: with Poisson's ratio 0.2, as the normal and shear stiffnesses of one block's depth relate.
 KS_OVER_KN = 5.0 / 6.0 / (2.0 * 1.2)
@@ -44,7 +47,7 @@ def _B(p: np.ndarray, c: np.ndarray) -> np.ndarray:
     return np.array([[1.0, 0.0, -r[1]], [0.0, 1.0, r[0]]])
 
 
-def _joint_terms(structure, kn: float, ks: float):
+def _joint_terms(structure, kn: float, ks: float, springs: str = "ends"):
     """Per joint: width, the spring matrix D (2x2) and the Gauss points with their weights [m]."""
     bodies = structure.bodies
     for j in structure.joints:
@@ -55,17 +58,17 @@ def _joint_terms(structure, kn: float, ks: float):
         n = np.asarray(j.normal, float)
         t = np.array([-n[1], n[0]])
         D = kn * np.outer(n, n) + ks * np.outer(t, t)
-        pts = [(p0 + x * (p1 - p0), wt * L) for x, wt in _GAUSS]
+        pts = [(p0 + x * (p1 - p0), wt * L) for x, wt in SPRINGS[springs]]
         yield j, w, D, pts
 
 
-def stiffness(structure, kn: float, ks: float) -> tuple[np.ndarray, np.ndarray]:
+def stiffness(structure, kn: float, ks: float, springs: str = "ends") -> tuple[np.ndarray, np.ndarray]:
     """``(K, K_g)``: the joints' elastic stiffness and the geometric stiffness of their preload under
     gravity (3 per body, SI)."""
     nb = len(structure.bodies)
     c = [np.asarray(b.centroid, float) for b in structure.bodies]
     K = np.zeros((3 * nb, 3 * nb))
-    terms = list(_joint_terms(structure, kn, ks))
+    terms = list(_joint_terms(structure, kn, ks, springs))
     for j, w, D, pts in terms:
         for p, ds in pts:
             B = np.zeros((2, 3 * nb))
@@ -109,23 +112,27 @@ class Modes:
     kn: float
     ks: float
     unstable: int
+    springs: str = "ends"
 
     def describe(self, count: int | None = None) -> dict:
         n = len(self.frequencies_hz) if count is None else count
         return {"frequencies_hz": self.frequencies_hz[:n].tolist(), "kn": self.kn, "ks": self.ks,
-                "n_modes": int(len(self.frequencies_hz)), "unstable": self.unstable}
+                "springs": self.springs, "n_modes": int(len(self.frequencies_hz)), "unstable": self.unstable}
 
 
-def modes(structure, kn: float, ks: float | None = None) -> Modes:
+def modes(structure, kn: float, ks: float | None = None, springs: str = "ends") -> Modes:
     """The natural frequencies and mode shapes of ``structure`` (an assembly, on piers or not, a frame
     or a single block) at rest under gravity on joints of stiffness ``kn``, ``ks`` [Pa/m] (``ks``
-    default ``KS_OVER_KN kn``)."""
+    default ``KS_OVER_KN kn``), their springs at the contact ends (``"ends"``, as the DEM's) or spread
+    over it (``"bed"``)."""
     from scipy.linalg import eigh
 
     kn = _positive("normal joint stiffness kn", kn)
     ks = KS_OVER_KN * kn if ks is None else _positive("shear joint stiffness ks", ks)
-    K, Kg = stiffness(structure, kn, ks)
+    if springs not in SPRINGS:
+        raise ArchdemInputError(f"joint springs {springs!r} is not one of {', '.join(SPRINGS)}")
+    K, Kg = stiffness(structure, kn, ks, springs)
     lam, phi = eigh(K + Kg, mass_matrix(structure))
     bad = int(np.sum(lam < 0))
     ok = lam >= 0
-    return Modes(np.sqrt(lam[ok]) / (2.0 * math.pi), phi[:, ok], kn, ks, bad)
+    return Modes(np.sqrt(lam[ok]) / (2.0 * math.pi), phi[:, ok], kn, ks, bad, springs)

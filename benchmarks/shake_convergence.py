@@ -1,6 +1,6 @@
 """Convergence of the shake threshold (least collapsing amplitude of a one-cycle sine, scan +
 bisection to 1 %) in the engine's numerical settings: one specimen and frequency, a threshold
-per ``engine:dt:iterations`` (iterations are PyBullet's solver iterations; MuJoCo takes its own
+per ``engine:dt:iterations[:table-5.1]`` (the last: the study's compliant joints for the id; iterations are PyBullet's solver iterations; MuJoCo takes its own
 from ``MuJoCoOptions`` and sub-steps at <= 0.25 ms, so its dt refines the step only below that).
 Scan from the static onset lambda to ``--max-ratio`` x lambda (5, as ``bench_shake.py``; the
 campaign scans to 4 x quick and 6 x full).
@@ -24,6 +24,7 @@ def main() -> None:
     from dem.core.settings import Settings
     from dem.experiments.shake import ShakeProtocol
     from dem.experiments.thresholds import static_onset, threshold
+    from specimens.catalogue import STUDY_JOINTS
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--id", default="Sh06-Sd015")
@@ -31,7 +32,7 @@ def main() -> None:
     ap.add_argument("--config", default="glued")
     ap.add_argument("--settings", default="pybullet:5e-4:100,pybullet:5e-4:200,pybullet:5e-4:400,"
                     "pybullet:2.5e-4:100,pybullet:2.5e-4:200,mujoco:5e-4:100,mujoco:1.25e-4:100",
-                    help="comma-separated engine:dt:iterations")
+                    help="comma-separated engine:dt:iterations[:table-5.1]")
     ap.add_argument("--max-ratio", type=float, default=5.0, help="scan up to this x the static onset")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     a = ap.parse_args()
@@ -40,11 +41,14 @@ def main() -> None:
     lam = static_onset(model, st0)
     rows = []
     for spec in a.settings.split(","):
-        eng, dt, it = spec.split(":")
+        eng, dt, it, *law = spec.split(":")
         st = st0.with_(engine=eng, dt=float(dt), solver_iterations=int(it))
+        if law == ["table-5.1"]:
+            kn, _, beta = STUDY_JOINTS[a.id]
+            st = st.with_(contact_law="compliant", kn=kn, damping_beta=beta)
         t0 = time.perf_counter()
         th = threshold(model, a.freq, st, ShakeProtocol(), a_min_g=lam, a_max_g=a.max_ratio * lam, tol=0.01, workers=a.workers)
-        rows.append({"engine": eng, "dt": float(dt), "solver_iterations": int(it), "amplitude_g": th.amplitude_g,
+        rows.append({"engine": eng, "contact_law": st.contact_law, "dt": float(dt), "solver_iterations": int(it), "amplitude_g": th.amplitude_g,
                      "bracket_g": list(th.bracket_g) if th.bracket_g else None, "n_sims": th.n_sims,
                      "survival_bands_above": th.survival_bands_above, "wall_s": time.perf_counter() - t0,
                      "load_avg_1min": os.getloadavg()[0]})

@@ -104,3 +104,21 @@ def catalogue_rows() -> list[dict]:
 
 
 JSON_KEYS = ("id", "Ri", "Re", "e", "t", "Sh", "Sd", "span", "rise", "mass", "n_blocks")
+
+
+#: The reference study's DEM joints per specimen (its Table 5.1): normal stiffness k_N [Pa/m, read per
+#: unit joint area: docs/physics/modes.md#4-reading-the-studys-joint-table], the rotational-impact
+#: frequency omega_r [rad/s] and the stiffness-proportional Rayleigh coefficient beta_R [s] it used.
+STUDY_JOINTS: dict[str, tuple[float, float, float]] = {
+    "Sh02-Sd015": (4.8e8, 305.0, 3.28e-3),
+    "Sh02-Sd020": (4.82e8, 472.7, 2.12e-3),
+    "Sh02-Sd025": (4.83e8, 665.3, 1.5e-3),
+    "Sh06-Sd010": (4.3e8, 204.4, 4.89e-3),
+    "Sh06-Sd015": (4.34e8, 383.0, 2.61e-3),
+    "Sh06-Sd020": (4.38e8, 601.9, 1.66e-3),
+    "Sh06-Sd025": (4.44e8, 859.8, 1.16e-3),
+    "Sh1-Sd010": (3.9e8, 240.0, 4.17e-3),
+    "Sh1-Sd015": (4e8, 574.8, 1.74e-3),
+    "Sh1-Sd020": (4.1e8, 726.4, 1.38e-3),
+    "Sh1-Sd025": (4.2e8, 1054.3, 9.49e-4),
+}

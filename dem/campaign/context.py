@@ -20,6 +20,29 @@ class CampaignContext:
     log: Callable[[str], None] = print
     results: dict = field(default_factory=dict)
     contact: float | str = 1.0  # effective contact of every joint, or "calibrated" (per specimen)
+    joints: dict | str | None = None  # None: rigid; "table-5.1": the study's per specimen; or compliant-law settings
+
+    def law_of(self, spec) -> dict:
+        """The contact-law settings of ``spec``'s joints in the tilt, shake, record and fragility steps ({} = rigid)."""
+        if not self.joints:
+            return {}
+        if self.joints == "table-5.1":
+            from specimens.catalogue import STUDY_JOINTS
+
+            kn, _, beta = STUDY_JOINTS[spec.id]
+            return {"contact_law": "compliant", "kn": kn, "damping_beta": beta}
+        return dict(self.joints)
+
+    def joints_text(self) -> str:
+        """The joints of the simulator steps, in words for their summaries."""
+        if not self.joints:
+            return "Rigid joints."
+        if self.joints == "table-5.1":
+            return "Compliant joints: each specimen's k_n and beta_R of the study's Table 5.1."
+        j = self.joints
+        damping = (f"beta_R {j['damping_beta']:g} s" if j.get("damping_beta") else
+                   f"xi {j['damping_xi']:g} at omega_r" if j.get("damping_xi") else "no damping")
+        return f"Compliant joints: k_n {j['kn']:.3g} Pa/m, {damping}."
 
     def contact_of(self, spec) -> float:
         """The effective contact of ``spec``'s joints in this campaign."""

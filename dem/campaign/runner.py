@@ -20,6 +20,7 @@ from dem.campaign.step_catalogue import step_catalogue
 from dem.campaign.step_fragility import step_fragility
 from dem.campaign.step_lab import step_lab
 from dem.campaign.step_map import step_map
+from dem.campaign.step_modes import step_modes
 from dem.campaign.step_piers import step_piers
 from dem.campaign.step_record import step_record
 from dem.campaign.step_shake import step_shake
@@ -33,6 +34,7 @@ StepFunc = Callable[[CampaignContext, Path], dict]
 STEPS: dict[str, tuple[StepFunc, str]] = {
     "catalogue": (step_catalogue, "specimen catalogue, drawings and meshes"),
     "analytic": (step_analytic, "limit analysis of every specimen"),
+    "modes": (step_modes, "natural frequencies of every specimen on compliant joints"),
     "tilt": (step_tilt, "virtual tilt test of every specimen vs limit analysis"),
     "lab": (step_lab, "virtual vs physical: calibrated imperfect joints against the laboratory tilt tests"),
     "map": (step_map, "friction threshold map (rocking / sliding)"),
@@ -81,7 +83,7 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
     manifest_path = out / "campaign.json"
     manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
     params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "quick": ctx.quick,
-              **({} if ctx.contact == 1.0 else {"contact": ctx.contact})}
+              **({} if ctx.contact == 1.0 else {"contact": ctx.contact}), **({"joints": ctx.joints} if ctx.joints else {})}
     if manifest and manifest.get("parameters") != params:
         raise ArchdemInputError(
             f"{out} holds a campaign with other parameters ({manifest.get('parameters')}); choose another --out"

@@ -50,9 +50,9 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
 
     specs, freqs, n = fragility_plan(ctx)
     pert = Perturbation(edge_loss_sd=DEFAULT_EDGE_LOSS_SD, friction_cov=DEFAULT_FRICTION_COV)
-    settings = {"engine": ctx.engine}
     rows, figures = [], []
     for s in specs:
+        settings = {"engine": ctx.engine, **ctx.law_of(s)}
         model = as_model(s, config=ctx.config)
         lam = static_onset(model, Settings(**settings))
         groups, det = [], {}
@@ -101,7 +101,7 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
                 f"{r['median_ci_high']:.3f}), beta {r['beta']:.3f}; deterministic DEM {r['deterministic_g']:.3f} g, "
                 f"four-bar {r['four_bar_g']:.3f} g." for r in rows]
     return {
-        "summary": f"{n} realisations per stripe (joint edge-loss scatter {DEFAULT_EDGE_LOSS_SD * 1e3:g} mm, friction "
+        "summary": ctx.joints_text() + " " + f"{n} realisations per stripe (joint edge-loss scatter {DEFAULT_EDGE_LOSS_SD * 1e3:g} mm, friction "
                    f"CoV {DEFAULT_FRICTION_COV:g}), one-cycle sine pulses at {', '.join(f'{f:g}' for f in freqs)} Hz, "
                    "stripes in multiples of the static onset; lognormal fits by maximum likelihood with bootstrap "
                    "intervals.",

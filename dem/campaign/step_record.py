@@ -69,7 +69,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
-        r = threshold(model, 1.0, Settings(engine=ctx.engine), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
+        r = threshold(model, 1.0, Settings(engine=ctx.engine, **ctx.law_of(s)), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
                       tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
                       motion_fn=RecordAtPGA(str(path), t0, t1))
         a = r.amplitude_g
@@ -83,7 +83,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     findings = [f"{r['id']}: the El Centro 1940 window collapses the arch at PGA {r['collapse_pga_g']:.3f} g "
                 f"(x{r['scale_factor']:.2f} the record, {r['ratio_to_static']:.2f} x the static lambda)." for r in found]
     return {
-        "summary": f"{RECORD_FILE} (El Centro 1940, PEER NGA), window {t0:.2f}-{t1:.2f} s around the peak, baseline-"
+        "summary": ctx.joints_text() + " " + f"{RECORD_FILE} (El Centro 1940, PEER NGA), window {t0:.2f}-{t1:.2f} s around the peak, baseline-"
                    "corrected, 1 s zero tail; scaled to increasing PGA until collapse (scan, then bisection).",
         "tables": [{"name": "record", "title": "Recorded accelerogram scaled to collapse", "csv": "record/record.csv"}],
         "findings": findings,

@@ -31,7 +31,8 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     # the tilt test's own protocol (LP start, 0.5 %), quick or not: 3 simulations per test
     # (docs/timings.md#2-the-full-campaign)
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}
-    cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto, settings=eng, contact=ctx.contact_of(s))
+    cases = {(s.id, k): make_case(s.id, s.arch, ctx.config, mj, mb, protocol=proto,
+                                  settings=((eng or {}) | ctx.law_of(s)) or None, contact=ctx.contact_of(s))
              for s in ctx.specimens for k, (mj, mb) in frictions.items()}
     res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "tilt.h5", workers=ctx.workers,
                     scheduler=ctx.scheduler, resume=True,
@@ -113,7 +114,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
             f"The reference-friction lambda stays at or below the no-sliding lambda (+1 %) for {within} of {len(rows)} specimens.",
         ]
     return {
-        "summary": "Hold-and-bisect tilt test (lambda = tan theta, gravity rotated at constant magnitude) of every "
+        "summary": ctx.joints_text() + " " + "Hold-and-bisect tilt test (lambda = tan theta, gravity rotated at constant magnitude) of every "
                    f"specimen, {ctx.engine}, at the reference friction"
                    + ("" if ctx.quick else f" and at mu = {NO_SLIDING_MU:g} (no sliding)")
                    + ", next to the discrete static LP of the same linearised blocks"

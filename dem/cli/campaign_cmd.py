@@ -5,7 +5,15 @@ import argparse
 import time
 from pathlib import Path
 
-from dem.cli.common import add_engine_argument, contact_option, default_of, workers_option, writable_dir
+from dem.cli.common import (
+    add_contact_law_arguments,
+    add_engine_argument,
+    contact_law_settings,
+    contact_option,
+    default_of,
+    workers_option,
+    writable_dir,
+)
 
 
 def _campaign(args: argparse.Namespace) -> int:
@@ -32,9 +40,13 @@ def _campaign(args: argparse.Namespace) -> int:
         from dem.studies.sweep import check_scheduler
 
         check_scheduler(args.scheduler)  # before the output folder is made
+    # --joints table-5.1: each catalogue specimen its own (checked on the first: no --kn beside it, the engine)
+    joints = "table-5.1" if args.joints and contact_law_settings(args, specs[0].id) else (
+        contact_law_settings(args, None) or None)
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
-                          quick=args.quick, workers=args.workers, contact=args.contact, scheduler=args.scheduler)
+                          quick=args.quick, workers=args.workers, contact=args.contact, scheduler=args.scheduler,
+                          joints=joints)
     t0 = time.perf_counter()
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
     from dem.campaign.runner import default_steps
@@ -75,6 +87,7 @@ def register(sub) -> None:
                    help="effective contact of every joint in every step, in (0, 1], or 'calibrated' (archdem calibrate; "
                         f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
     add_engine_argument(p)
+    add_contact_law_arguments(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT: run every sweep there")

@@ -292,3 +292,70 @@ def add_engine_argument(p: argparse.ArgumentParser) -> None:
 def parse_grid(text: str, what: str = "--freq") -> list[float]:
     """A grid option: :func:`specimens.io.parse_grid` (one parser for every command)."""
     return _parse_grid(text, what)
+
+
+#: ``--joints`` sets: the reference study's compliant joints of a catalogue specimen.
+JOINT_SETS = ("table-5.1",)
+
+
+def add_contact_law_arguments(p: argparse.ArgumentParser) -> None:
+    """``--contact-law rigid|compliant --kn --damping-beta|--damping-xi`` and ``--joints table-5.1``."""
+    from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
+
+    law = default_of(Settings, "contact_law")
+    p.add_argument("--contact-law", dest="contact_law", choices=CONTACT_LAWS, default=None,
+                   help=f"joints: as stiff as the engine makes them, or springs (default {law}; compliant with --kn)")
+    p.add_argument("--kn", type=float, default=None, help="normal joint stiffness per unit area [Pa/m] (compliant)")
+    p.add_argument("--ks", type=float, default=None, help="not taken: the engines' joints stick rigidly until they slide")
+    p.add_argument("--damping-beta", dest="damping_beta", type=float, default=None,
+                   help="stiffness-proportional Rayleigh damping beta_R of the joints [s] "
+                        f"(default {default_of(Settings, 'damping_beta'):g})")
+    p.add_argument("--damping-xi", dest="damping_xi", type=float, default=None,
+                   help=f"or the joints' damping ratio at the rotational-impact frequency, 0-{MAX_DAMPING_XI:g}")
+    p.add_argument("--joints", choices=JOINT_SETS, default=None,
+                   help="the reference study's joints of a catalogue specimen (k_n and beta_R of its Table 5.1)")
+
+
+def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
+    """The contact-law fields of :class:`dem.core.settings.Settings` from the command line ({} = rigid),
+    for the specimen ``specimen_id`` (``--joints table-5.1``) and the engine ``args.engine``."""
+    out = _contact_law(args, specimen_id)
+    if out and getattr(args, "engine", None) == "mujoco":
+        raise ArchdemInputError("compliant joints run on --engine pybullet: on MuJoCo their friction creeps under "
+                                "sustained shear (docs/engines.md#10-compliant-joints)")
+    return out
+
+
+def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
+    from dem.core.settings import Settings
+
+    kn, beta, xi = (getattr(args, k, None) for k in ("kn", "damping_beta", "damping_xi"))
+    law = getattr(args, "contact_law", None)
+    if getattr(args, "ks", None) is not None:
+        raise ArchdemInputError("--ks: the engines' joints stick rigidly until they slide; shear stiffness goes to "
+                                "archdem modes")
+    if getattr(args, "joints", None) == "table-5.1":
+        from specimens.catalogue import STUDY_JOINTS
+
+        if kn is not None or beta is not None or xi is not None or law == "rigid":
+            raise ArchdemInputError("--joints table-5.1 sets the joints: give it without --contact-law rigid, --kn or --damping-*")
+        if specimen_id not in STUDY_JOINTS:
+            raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
+        k, _, b = STUDY_JOINTS[specimen_id]
+        return {"contact_law": "compliant", "kn": k, "damping_beta": b}
+    given = [n for n, v in (("--kn", kn), ("--damping-beta", beta), ("--damping-xi", xi)) if v is not None]
+    if law is None:
+        law = "compliant" if given else default_of(Settings, "contact_law")
+    if law == "rigid":
+        if given:
+            raise ArchdemInputError(f"{', '.join(given)} belong to --contact-law compliant, not rigid")
+        return {}
+    if kn is None:
+        raise ArchdemInputError("--contact-law compliant needs --kn PA_PER_M (or --joints table-5.1)")
+    for name, v in (("--kn", kn), ("--damping-beta", beta), ("--damping-xi", xi)):
+        if v is not None and not (math.isfinite(v) and (v > 0 if name == "--kn" else v >= 0)):
+            raise ArchdemInputError(f"{name} must be a {'positive' if name == '--kn' else 'non-negative'} number, got {v}")
+    out = {"contact_law": "compliant", "kn": kn, **({"damping_beta": beta} if beta is not None else {}),
+           **({"damping_xi": xi} if xi is not None else {})}
+    Settings(**out)  # the law's own checks (xi's range)
+    return out

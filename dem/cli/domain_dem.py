@@ -6,6 +6,7 @@ import argparse
 
 from dem.cli.common import (
     arch_from_args,
+    contact_law_settings,
     default_of,
     discretisation_kwargs,
     parse_grid,
@@ -15,6 +16,18 @@ from dem.cli.common import (
 )
 from dem.experiments.domain import analytic_domains, dem_failure_domain
 from specimens.errors import ArchdemInputError
+
+
+def _settings(args: argparse.Namespace, law: dict):
+    """The DEM's settings of the domain: None (the reference frictions, rigid joints) or with the joints given."""
+    if not law:
+        return None
+    from dem.core.settings import Settings
+    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
+    mu_j, mu_b = getattr(args, "mu_joint", None), getattr(args, "mu_base", None)
+    return Settings(mu_joint=REFERENCE_MU_JOINT if mu_j is None else mu_j,
+                    mu_base=REFERENCE_MU_BASE if mu_b is None else mu_b, **law)
 
 
 def dem_domain(args: argparse.Namespace) -> int:
@@ -33,6 +46,7 @@ def dem_domain(args: argparse.Namespace) -> int:
     if args.plot:
         writable_file(args.plot, overwrite=False)
     label, arch = arch_from_args(args)
+    law = contact_law_settings(args, getattr(args, "id", None))
     dem_a_max = default_of(dem_failure_domain, "a_max_ratio")
     a_max = getattr(args, "amax", dem_a_max)
     # the analytic default (failure_domain's a_max_ratio) is too costly here: the DEM's own default instead
@@ -40,7 +54,7 @@ def dem_domain(args: argparse.Namespace) -> int:
     res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
                              workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
-                             scheduler=getattr(args, "scheduler", None))
+                             scheduler=getattr(args, "scheduler", None), settings=_settings(args, law))
     if args.plot:
         from dem.plotting.shake import plot_domain_over_analytic
 

@@ -6,6 +6,7 @@ import math
 
 from dem.cli.common import (
     add_arch_arguments,
+    add_contact_law_arguments,
     arch_from_args,
     check_density,
     default_of,
@@ -125,6 +126,8 @@ def _run_domain(args: argparse.Namespace) -> int:
         return int(dem_domain(args) or 0)
     if args.scheduler:
         raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
+    if any(getattr(args, k) is not None for k in ("contact_law", "kn", "ks", "damping_beta", "damping_xi", "joints")):
+        raise ArchdemInputError("--contact-law, --kn, --damping-* and --joints are the DEM's joints (--engine dem)")
     from analytic.domain import failure_domain
     from analytic.impact import post_impact
 
@@ -248,6 +251,7 @@ def register(sub) -> None:
                    help=f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})")
     p.add_argument("--mu-base", dest="mu_base", type=float, default=None,
                    help=f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})")
+    add_contact_law_arguments(p)
     p.set_defaults(func=_run_domain)
 
     q = sub.add_parser("rock", help="one time history of a rocking linkage",

@@ -9,10 +9,12 @@ import sys
 
 from dem.cli.common import (
     add_arch_arguments,
+    add_contact_law_arguments,
     add_engine_argument,
     add_friction_arguments,
     arch_from_args,
     block_from_args,
+    contact_law_settings,
     default_of,
     discretisation_kwargs,
     figure_file,
@@ -48,7 +50,8 @@ def _structure(args: argparse.Namespace):
 def _settings(args: argparse.Namespace) -> dict:
     from dem.core.settings import Settings
 
-    s = {"engine": args.engine, "mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": bool(args.planar)}
+    s = {"engine": args.engine, "mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": bool(args.planar),
+         **contact_law_settings(args, getattr(args, "id", None))}
     if args.dt is not None:
         s["dt"] = args.dt
     if args.solver_iterations is not None:
@@ -214,6 +217,7 @@ def register(sub) -> None:
     p.add_argument("--solver-iterations", type=int, default=None,
                    help=f"solver iterations per step (default {default_of(Settings, 'solver_iterations')})")
     add_engine_argument(p)
+    add_contact_law_arguments(p)
     p.add_argument("--no-deterministic", action="store_true",
                    help="skip the nominal structure's threshold beside each sine curve")
     p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")

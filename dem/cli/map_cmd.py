@@ -6,8 +6,10 @@ import math
 import sys
 
 from dem.cli.common import (
+    add_contact_law_arguments,
     add_engine_argument,
     add_pier_arguments,
+    contact_law_settings,
     contact_option,
     default_of,
     piers_from_args,
@@ -59,6 +61,9 @@ def _run(args: argparse.Namespace) -> int:
     piers = piers_from_args(args)
     for s in specs if piers is not None else ():
         piers.check(s.arch)
+    law = contact_law_settings(args, specs[0].id if len(specs) == 1 else None) if args.joints is None or len(specs) == 1 \
+        else contact_law_settings(args, "several specimens")
+    settings = ({"engine": args.engine} if args.engine != default_of(Settings, "engine") else {}) | law
     path, resume = study_path(args, "runs/map", f"map-{args.config}")
     if args.plot:
         writable_dir(args.plot)
@@ -66,7 +71,7 @@ def _run(args: argparse.Namespace) -> int:
         res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
-                            settings={"engine": args.engine} if args.engine != default_of(Settings, "engine") else None,
+                            settings=settings or None,
                             contact={s.id: resolve_contact(args.contact, s.arch) for s in specs}, piers=piers)
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
@@ -117,6 +122,7 @@ def register(sub) -> None:
                    help=f"relative lambda tolerance of each tilt (default {MAP_TILT_TOL:g})")
     p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")
     add_engine_argument(p)
+    add_contact_law_arguments(p)
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
     p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")
     p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/map/map-CONFIG[-N].h5)")

@@ -39,7 +39,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot:
         figure_file(args.plot)
     label, structure = _structure(args)
-    res = modes(structure, args.kn, args.ks)
+    res = modes(structure, args.kn, args.ks, springs=args.springs)
     out = {"id": label, **res.describe(args.count)}
     if args.plot:
         from dem.plotting.modes import save_mode_shapes
@@ -50,14 +50,15 @@ def _run(args: argparse.Namespace) -> int:
         print_json(out)
         return 0
     f = res.frequencies_hz[:args.count]
-    print(f"{label}: {len(res.frequencies_hz)} modes on joints kn {res.kn:.3g} Pa/m, ks {res.ks:.3g} Pa/m"
+    print(f"{label}: {len(res.frequencies_hz)} modes on joints kn {res.kn:.3g} Pa/m, ks {res.ks:.3g} Pa/m "
+          f"(springs at the {'contact ends' if res.springs == 'ends' else 'whole contact'})"
           + (f" ({res.unstable} unstable under gravity)" if res.unstable else ""))
     print("  " + "  ".join(f"{x:.4g}" for x in f) + " Hz")
     return 0
 
 
 def register(sub) -> None:
-    from analytic.modes import KS_OVER_KN
+    from analytic.modes import KS_OVER_KN, SPRINGS, modes
     from dem.cli.common import default_of
     from specimens.blocks import discretise
 
@@ -70,6 +71,9 @@ def register(sub) -> None:
     p.add_argument("--kn", type=float, required=True, help="normal joint stiffness per unit area [Pa/m]")
     p.add_argument("--ks", type=float, default=None,
                    help=f"shear joint stiffness per unit area [Pa/m] (default {KS_OVER_KN:.3f} kn)")
+    p.add_argument("--springs", choices=tuple(SPRINGS), default=default_of(modes, "springs"),
+                   help="a joint's springs at its contact's two ends, as the DEM's corner contacts (default), "
+                        "or spread over it")
     p.add_argument("--count", type=int, default=80, help="modes printed (default 80)")
     p.add_argument("--plot", default=None, metavar="FILE.png", help="the first mode shapes drawn on the structure")
     p.add_argument("--json", action="store_true", help="print one JSON object")

@@ -8,10 +8,12 @@ import sys
 
 from dem.cli.common import (
     add_arch_arguments,
+    add_contact_law_arguments,
     add_engine_argument,
     add_friction_arguments,
     arch_from_args,
     can_make_dir,
+    contact_law_settings,
     default_of,
     discretisation_kwargs,
     figure_file,
@@ -38,7 +40,8 @@ def _model_and_settings(args: argparse.Namespace):
     _positive("--mu-joint", args.mu_joint)
     _positive("--mu-base", args.mu_base)
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
-    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
+    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine,
+          **contact_law_settings(args, args.id)}
     if args.dt is not None:
         _positive("--dt", args.dt)
         kw["dt"] = args.dt
@@ -154,6 +157,7 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
+    add_contact_law_arguments(p)
     p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),
                    help=f"zero-acceleration tail after the motion [s], up to {MAX_SIMULATED_S:g} "
                         f"(default {default_of(ShakeProtocol, 'tail'):g})")

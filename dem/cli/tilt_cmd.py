@@ -6,9 +6,11 @@ import math
 
 from dem.cli.common import (
     add_arch_arguments,
+    add_contact_law_arguments,
     add_engine_argument,
     arch_from_args,
     can_make_dir,
+    contact_law_settings,
     default_of,
     discretisation_kwargs,
     figure_file,
@@ -35,12 +37,15 @@ def _run(args: argparse.Namespace) -> int:
         v = getattr(args, name)
         if not (math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
+    law = contact_law_settings(args, args.id)
     if args.ensemble is not None:
+        if law:
+            raise ArchdemInputError("an ensemble runs rigid joints: drop --contact-law/--kn/--damping-*/--joints")
         return _run_ensemble(args, label, arch)
     if args.seed is not None or args.scatter is not None or args.workers is not None:
         raise ArchdemInputError("--seed, --scatter and --workers go with --ensemble N")
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
-    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine}
+    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine, **law}
     if args.dt is not None:
         kw["dt"] = args.dt
     settings = Settings(**kw)
@@ -132,6 +137,7 @@ def register(sub) -> None:
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     add_engine_argument(p)
+    add_contact_law_arguments(p)
     p.add_argument("--out", default="runs/tilt", help="directory for the result file (default runs/tilt)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")

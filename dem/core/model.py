@@ -186,21 +186,21 @@ def as_model(target: Any, config: str = "glued", name: str | None = None, **disc
 
 
 def single_block(b: float, h: float, width: float = 0.1, density: float = 500.0) -> Model:
-    """A rectangular block ``b`` (along x) by ``h`` (along y) by ``width`` [m] on a flat base.
+    """The model of :func:`specimens.frame.single_block`: a rectangular block ``b`` (along x) by ``h``
+    (along y) by ``width`` [m] — full dimensions here — on a flat base.
 
     Its base joint ``B0`` runs from the left corner (``p_i``) to the right corner (``p_e``).
     """
+    from specimens.frame import single_block as block
+
     for nm, v in (("block base b", b), ("block height h", h), ("block width", width), ("density", density)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"{nm} must be a positive number, got {v!r}")
-    poly = np.array([[-b / 2, 0.0], [b / 2, 0.0], [b / 2, h], [-b / 2, h]])
-    m = density * b * h * width
-    inertia = np.diag([m * (h**2 + width**2) / 12, m * (b**2 + width**2) / 12, m * (b**2 + h**2) / 12])
-    body = BodySpec("B", (poly,), width, m, np.array([0.0, h / 2, 0.0]), inertia, poly)
-    joint = JointSpec("B0", -1, 0, np.array([-b / 2, 0.0]), np.array([b / 2, 0.0]), np.array([0.0, 1.0]))
+    bodies, joints = _specs(block(b / 2, h / 2, density, width))
     L = 4 * max(b, h)
     base = BaseSpec((_base_pads(-L / 2, L / 2, max(b, h), 0.0),), 4 * width)
-    return Model("block", (body,), (joint,), base, h, 0,
+    # no assembly: a block's tilt test starts with the ramp scan (docs/validation.md#3-single-block), not from an LP
+    return Model("block", bodies, joints, base, h, 0,
                  {"kind": "block", "b": b, "h": h, "width": width, "density": density})
 
 

@@ -16,6 +16,11 @@ from specimens.errors import ArchdemInputError
 #: Friction coefficients a simulation takes: below 0.01 (ice on ice) a block slides at any tilt,
 #: and 10 already prevents any sliding of the catalogue.
 MIN_FRICTION, MAX_FRICTION = 0.01, 1e3
+#: Joint models: as stiff as the engine makes them, or springs of a given stiffness per unit area.
+CONTACT_LAWS = ("rigid", "compliant")
+#: Largest damping ratio of the joints at omega_r (the study's Table 5.1 is 0.5 there, docs/physics/dem.md#17):
+#: at 2 every mode above omega_r / 2 is already overdamped, more only slows the blocks down.
+MAX_DAMPING_XI = 2.0
 
 
 @dataclass(frozen=True)
@@ -46,6 +51,13 @@ class Settings:
     contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (docs/decisions/006-solver-settings.md#contacts)
     friction_erp: float = 1.0  # friction drift correction; lower values let blocks near the friction limit creep
 
+    # joints: "rigid" is as stiff as each engine's solver makes it (the validated default); "compliant" puts
+    # springs and dashpots of these per-unit-area values at the engines' contact points (dem.core.contact)
+    contact_law: str = "rigid"
+    kn: float = 0.0  # [Pa/m] normal joint stiffness per unit area (compliant law)
+    damping_beta: float = 0.0  # [s] stiffness-proportional Rayleigh coefficient beta_R (compliant law)
+    damping_xi: float = 0.0  # or the damping ratio at the rotational-impact frequency omega_r: beta_R = 2 xi / omega_r
+
     # detection (docs/physics/dem.md#5-collapse-criterion)
     collapse_fraction: float = 0.06  # collapse: any body point moved > this x size (ring thickness)
     collapse_speed: float = 1e-3  # ... while that body still moves faster than this [m/s]
@@ -74,9 +86,29 @@ class Settings:
             if not MIN_FRICTION <= getattr(self, name) <= MAX_FRICTION:
                 raise ArchdemInputError(f"{name} = {getattr(self, name):g} is outside {MIN_FRICTION:g}-{MAX_FRICTION:g} "
                                         "(no sliding: 10)")
+        self._check_contact_law()
         lo, hi = self.mode_window
         if not (0 < lo < hi <= self.collapse_fraction):
             raise ArchdemInputError("mode window must satisfy 0 < lo < hi <= collapse_fraction")
+
+    def _check_contact_law(self) -> None:
+        if self.contact_law not in CONTACT_LAWS:
+            raise ArchdemInputError(f"contact law {self.contact_law!r} is not one of {', '.join(CONTACT_LAWS)}")
+        for name in ("kn", "damping_beta", "damping_xi"):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+                raise ArchdemInputError(f"{name} must be a number >= 0, got {v!r}")
+        if self.contact_law == "rigid":
+            given = [n for n in ("kn", "damping_beta", "damping_xi") if getattr(self, n)]
+            if given:
+                raise ArchdemInputError(f"{', '.join(given)} belong to the compliant contact law (contact_law 'compliant')")
+            return
+        if not self.kn > 0:
+            raise ArchdemInputError("the compliant contact law needs the normal joint stiffness kn > 0 [Pa/m]")
+        if self.damping_xi > MAX_DAMPING_XI:
+            raise ArchdemInputError(f"damping ratio xi = {self.damping_xi:g} is outside 0-{MAX_DAMPING_XI:g}")
+        if self.damping_beta and self.damping_xi:
+            raise ArchdemInputError("give the joints' damping as beta_R or as xi at omega_r, not both")
 
     @property
     def record_steps(self) -> int:
@@ -99,8 +131,9 @@ class Settings:
                 kw[k] = bool(kw[k])
         if "solver_iterations" in kw:
             kw["solver_iterations"] = int(kw["solver_iterations"])
-        if "engine" in kw and isinstance(kw["engine"], bytes):
-            kw["engine"] = kw["engine"].decode()
+        for k in ("engine", "contact_law"):
+            if k in kw and isinstance(kw[k], bytes):
+                kw[k] = kw[k].decode()
         return cls(**kw)
 
     def with_(self, **kw) -> "Settings":

@@ -55,6 +55,10 @@ class MuJoCoOptions:
     solver: str = "Newton"
     integrator: str = "implicitfast"
     margin: float = 0.0  # [m] contact margin; inflated hulls already touch at step 0
+    compliant_impedance: float = 0.001  # impedance d of compliant joints: small d makes MuJoCo's contact a
+    #   spring of stiffness -solref[0] / ((1 - d) A) (A: the pair's inverse mass); 0.01 put a block's frequencies 1-2 % low
+    compliant_impratio: float = 1e4  # friction-to-normal impedance ratio with compliant joints (friction still
+    #   creeps under sustained shear whatever it is: docs/engines.md#10-compliant-joints)
     extra: dict = field(default_factory=dict)  # other <option> attributes, verbatim
 
     def with_(self, **kw) -> "MuJoCoOptions":
@@ -64,7 +68,9 @@ class MuJoCoOptions:
         return {"max_dt": self.max_dt, "solref": list(self.solref), "solimp": list(self.solimp),
                 "noslip_iterations": self.noslip_iterations, "iterations": self.iterations,
                 "tolerance": self.tolerance, "condim": self.condim, "cone": self.cone, "solver": self.solver,
-                "integrator": self.integrator, "margin": self.margin, **self.extra}
+                "integrator": self.integrator, "margin": self.margin,
+                "compliant_impedance": self.compliant_impedance, "compliant_impratio": self.compliant_impratio,
+                **self.extra}
 
 
 DEFAULT_OPTIONS = MuJoCoOptions()
@@ -79,11 +85,24 @@ def substeps(dt: float, max_dt: float) -> int:
     return max(1, math.ceil(dt / max_dt - 1e-9))
 
 
+def largest_step(model: Model, settings: Settings, options: MuJoCoOptions) -> float:
+    """MuJoCo's largest internal step [s]: ``options.max_dt``, and with compliant joints at most
+    ``1 / omega_max`` and ``1 / (beta_R omega_max^2)`` — MuJoCo integrates the contact springs and
+    dashpots explicitly, stable only below twice these (stiffness-proportional damping of stiff joints
+    costs many steps: at the study's joints, beta_R omega_max ~ 30)."""
+    if settings.contact_law != "compliant":
+        return options.max_dt
+    from dem.core.contact import highest_frequency, rayleigh_beta
+
+    w = highest_frequency(model, settings.kn)
+    return min(options.max_dt, 1.0 / w, 1.0 / max(rayleigh_beta(settings, model) * w * w, 1e-30))
+
+
 def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTIONS, driven_base: bool = False) -> str:
     """The MJCF text of ``model`` (bodies, convex mesh pieces, base, options); ``driven_base``:
     the base is a heavy body on an x slide joint named ``table``."""
     o = options
-    n_sub = substeps(settings.dt, o.max_dt)
+    n_sub = substeps(settings.dt, largest_step(model, settings, o))
     h = settings.dt / n_sub
     opt_extra = "".join(f' {k}="{v}"' for k, v in o.extra.items())
     assets, world, bodies = [], [], []
@@ -122,6 +141,9 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
         inertial = (f'<inertial pos="0 0 0" mass="{_f(significant(b.mass))}" '
                     f'fullinertia="{_f([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])}"/>')
         bodies.append(f'<body name="body{i}" pos="{_f(c)}">{joints}{inertial}{"".join(geoms)}</body>')
+    contact = _compliant_pairs(model, settings, o, driven_base, h) if settings.contact_law == "compliant" else ""
+    if contact:
+        opt_extra += f' impratio="{_f(o.compliant_impratio)}"'
     g = settings.g
     return (
         f'<mujoco model="{model.name}">'
@@ -131,8 +153,42 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
         f'noslip_iterations="{o.noslip_iterations}"{opt_extra}/>'
         f'<asset>{"".join(assets)}</asset>'
         f'<worldbody>{"".join(world)}{"".join(bodies)}</worldbody>'
-        '</mujoco>'
+        f'{contact}</mujoco>'
     )
+
+
+def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_base: bool, h: float) -> str:
+    """``<contact>``: for every joint, explicit geom pairs of its two bodies carrying the joint's spring
+    and dashpot (dem.core.contact), and the same body pairs excluded from MuJoCo's own contacts.
+
+    With impedance ``d`` MuJoCo's contact force is ``-(k r + c v) / ((1 - d) A)`` in the soft limit
+    (``A`` the pair's inverse mass, ``1/m_a + 1/m_b``), so ``solref = -(k_pt, c_pt) (1 - d) A``. The friction
+    rows' damping ``d / h`` (``h`` the internal step) would take a sticking joint's slip velocity out within
+    one step; they still creep under sustained shear (docs/engines.md#10-compliant-joints)."""
+    from dem.core.contact import point_stiffness, rayleigh_beta
+
+    d = o.compliant_impedance
+    beta = rayleigh_beta(settings, model)
+    base_body = "table" if driven_base else "world"
+    geoms = [[f"b{i}p{k}" for k in range(len(b.pieces))] for i, b in enumerate(model.bodies)]
+    base_geoms = [f"base{k}" for k in range(len(model.base.pieces))]
+    pairs, excl, seen = [], [], set()
+    for j, kp in zip(model.joints, point_stiffness(model, settings.kn)):
+        key = (min(j.a, j.b), max(j.a, j.b))
+        if key in seen:
+            continue
+        seen.add(key)
+        inv_mass = sum(1.0 / model.bodies[k].mass for k in key if k >= 0)
+        k_mj, c_mj = significant(kp * (1.0 - d) * inv_mass), significant(beta * kp * (1.0 - d) * inv_mass)
+        mu = settings.mu_base if j.is_base else settings.mu_joint
+        g1 = base_geoms if key[0] < 0 else geoms[key[0]]
+        for a in g1:
+            for b in geoms[key[1]]:
+                pairs.append(f'<pair geom1="{a}" geom2="{b}" condim="{o.condim}" friction="{_f([mu, mu, 0, 0, 0])}" '
+                             f'solref="{_f([-k_mj, -c_mj])}" solreffriction="{_f([-0.0, -d / h])}" '
+                             f'solimp="{_f([d, d, 0.001, 0.5, 2])}" margin="{_f(o.margin)}"/>')
+        excl.append(f'<exclude body1="{base_body if key[0] < 0 else f"body{key[0]}"}" body2="body{key[1]}"/>')
+    return f'<contact>{"".join(pairs)}{"".join(excl)}</contact>'
 
 
 class MuJoCoEngine(Engine):
@@ -156,7 +212,7 @@ class MuJoCoEngine(Engine):
         if driven_base:
             j = mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_JOINT, "table")
             self._table = (int(self._m.jnt_qposadr[j]), int(self._m.jnt_dofadr[j]))
-        self._nsub = substeps(settings.dt, self.options.max_dt)
+        self._nsub = substeps(settings.dt, largest_step(model, settings, self.options))
         self._bid = np.array([mujoco.mj_name2id(self._m, mujoco.mjtObj.mjOBJ_BODY, f"body{i}")
                               for i in range(model.n_bodies)])
         # body index (-1 = base / world) of each MuJoCo body id

@@ -236,8 +236,22 @@ class PyBulletEngine(Engine):
             self._R0[k] = R
         self._index = {bid: k for k, bid in enumerate(self._ids)}
         self._index[self._base] = -1
+        if settings.contact_law == "compliant":
+            self._compliant(model, settings)
         self._planar = settings.planar
         self._z0 = np.array([b.centroid[2] for b in model.bodies])
+
+    def _compliant(self, model: Model, settings: Settings) -> None:
+        """Springs and dashpots at the contact points (dem.core.contact): Bullet combines two bodies'
+        stiffnesses in series and adds their dampings, so each body gets twice its point stiffness
+        and half its point damping (exact for a joint between bodies of equal joints)."""
+        from dem.core.contact import body_point_stiffness, rayleigh_beta
+
+        beta = rayleigh_beta(settings, model)
+        k_bodies, k_base = body_point_stiffness(model, settings.kn)
+        for bid, k in [*zip(self._ids, k_bodies), (self._base, k_base)]:
+            self._p.changeDynamics(bid, -1, contactStiffness=float(significant(2.0 * k)),
+                                   contactDamping=float(significant(0.5 * beta * k)))
 
     # -- running --------------------------------------------------------------------------
     def set_gravity(self, vec) -> None:

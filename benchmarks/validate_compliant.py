@@ -1,0 +1,133 @@
+"""Compliant joints against independent truths (docs/validation.md#16-compliant-joints):
+
+* ``vibration``: a block's vertical and rocking free vibration in both engines against the closed forms
+  of its springs (at the base's two ends) and ``analytic.modes``, and the vertical damping ratio
+  against ``beta_R omega / 2``;
+* ``tilt``: the no-sliding tilt lambda of the catalogue with the study's joints (Table 5.1) against
+  the LP, and how lambda moves with k_n on one specimen;
+* ``shake``: one-cycle sine thresholds of the Sd 0.15/0.20 specimens at 2-10 Hz with the study's
+  joints, beside the rigid DEM and the four-bar.
+
+Writes benchmarks/results/validate_compliant_<part>.json.
+
+    python benchmarks/validate_compliant.py vibration|tilt|shake [--engines pybullet,mujoco] [--ids ...]
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+
+from _common import report
+
+#: A block 0.2 x 0.4 x 0.1 m of 500 kg/m^3 and soft joints: ~11 Hz vertical, ~5 Hz rocking.
+BLOCK = (0.2, 0.4, 0.1, 500.0)
+
+
+def vibration(engines: list[str]) -> dict:
+    from analytic.modes import modes
+    from dem.core.model import single_block
+    from dem.core.settings import Settings
+    from dem.experiments.free_vibration import free_vibration
+    from specimens.constants import G
+    from specimens.frame import single_block as block_structure
+
+    b, h, w, rho = BLOCK
+    m = rho * b * h * w
+    rows = []
+    for kn in (1e6, 1e7):
+        f_v = math.sqrt(kn * b * w / m) / (2 * math.pi)
+        Io = m * (b * b + h * h) / 12 + m * (h / 2) ** 2
+        f_r = math.sqrt((kn * b * w * b * b / 4 - m * G * h / 2) / Io) / (2 * math.pi)
+        fm = modes(block_structure(b / 2, h / 2, rho, w), kn, 1e4 * kn).frequencies_hz
+        for eng in engines:
+            for beta in (0.0, 0.1 / (2 * math.pi * f_v)):  # xi 0.05 in the vertical mode
+                t0 = time.perf_counter()
+                r = free_vibration(single_block(b, h, w, rho), Settings(engine=eng, dt=1e-4, contact_law="compliant",
+                                                                        kn=kn, damping_beta=beta))
+                rows.append({"engine": eng, "kn": kn, "beta": beta, "f_vertical": r["vertical"].frequency_hz,
+                             "f_vertical_exact": f_v, "f_rocking": r["rocking"].frequency_hz, "f_rocking_exact": f_r,
+                             "f_modes": fm[:2].tolist(), "xi_vertical": r["vertical"].damping,
+                             "xi_vertical_exact": beta * math.pi * f_v, "xi_rocking": r["rocking"].damping,
+                             "xi_rocking_exact": beta * math.pi * f_r * (1 + m * G * h / 2 / (Io * (2 * math.pi * f_r) ** 2)),
+                             "wall_s": time.perf_counter() - t0})
+                print({k: (round(v, 5) if isinstance(v, float) else v) for k, v in rows[-1].items()}, flush=True)
+    return {"block": BLOCK, "dt": 1e-4, "rows": rows}
+
+
+def tilt(engines: list[str], ids: list[str], damped: bool = True) -> dict:
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
+    from dem.experiments.tilt import TiltProtocol
+    from dem.experiments.tilt import tilt as run_tilt
+    from dem.experiments.tilt_check import check_result
+    from specimens.blocks import discretise
+    from specimens.catalogue import STUDY_JOINTS, get_specimen
+    from specimens.constants import NO_SLIDING_MU
+
+    rows = []
+    plan = [(sid, eng, STUDY_JOINTS[sid][0], STUDY_JOINTS[sid][2] if damped else 0.0) for eng in engines for sid in ids]
+    plan += [("Sh06-Sd015", "pybullet", kn, STUDY_JOINTS["Sh06-Sd015"][2]) for kn in (1e7, 3e7, 1e8)]
+    for sid, eng, kn, beta in plan:
+        asm = discretise(get_specimen(sid).arch, config="glued")
+        st = Settings(engine=eng, mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, contact_law="compliant", kn=kn,
+                      damping_beta=beta)
+        t0 = time.perf_counter()
+        res = run_tilt(from_assembly(asm, name=sid), st, TiltProtocol(), label=sid, assembly=asm)
+        c = check_result(res, asm)
+        rows.append({"id": sid, "engine": eng, "kn": kn, "beta": beta, "lam": c.lam, "lp_lam": c.lp_lam,
+                     "err_pct": c.err_pct, "mode": c.mode, "hinges_match_lp": c.hinges_match_lp,
+                     "wall_s": time.perf_counter() - t0})
+        print(rows[-1], flush=True)
+    return {"config": "glued", "rows": rows}
+
+
+def shake(ids: list[str], freqs: list[float], workers: int) -> dict:
+    from dem.campaign.step_shake import _lowest_threshold
+    from dem.core.settings import Settings
+    from dem.experiments.domain import analytic_domains, dem_failure_domain
+    from specimens.catalogue import STUDY_JOINTS, get_specimen
+
+    rows = []
+    for sid in ids:
+        arch = get_specimen(sid).arch
+        fb = _lowest_threshold(analytic_domains(arch, freqs, workers=1).get("four-bar"))
+        kn, _, beta = STUDY_JOINTS[sid]
+        for law, st in (("rigid", Settings()), ("table-5.1", Settings(contact_law="compliant", kn=kn, damping_beta=beta))):
+            t0 = time.perf_counter()
+            dom = dem_failure_domain(sid, arch, freqs, settings=st, workers=workers)
+            for t in dom["thresholds"]:
+                a = t["amplitude_g"]
+                rows.append({"id": sid, "law": law, "freq": t["freq"], "a_dem_g": a, "a_four_bar_g": fb.get(t["freq"]),
+                             "ratio": a / fb[t["freq"]] if a is not None and fb.get(t["freq"]) else None,
+                             "survival_bands_above": t.get("survival_bands_above"), "n_sims": t.get("n_sims")})
+                print(rows[-1], flush=True)
+            print(f"{sid} {law}: {time.perf_counter() - t0:.0f} s", flush=True)
+    return {"config": "glued", "freqs": freqs, "rows": rows}
+
+
+def main() -> None:
+    from specimens.catalogue import SPECIMEN_IDS
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("part", choices=("vibration", "tilt", "shake"))
+    ap.add_argument("--engines", default="pybullet,mujoco")
+    ap.add_argument("--ids", default=None, help="specimens (default: the catalogue for tilt, Sd 0.15/0.20 for shake)")
+    ap.add_argument("--freqs", default="2,4,6,8,10")
+    ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--undamped", action="store_true", help="tilt: the study's k_n without its damping")
+    a = ap.parse_args()
+    engines = a.engines.split(",")
+    if a.part == "vibration":
+        out = vibration(engines)
+    elif a.part == "tilt":
+        out = tilt(engines, a.ids.split(",") if a.ids else list(SPECIMEN_IDS), not a.undamped)
+    else:
+        ids = a.ids.split(",") if a.ids else [s for s in SPECIMEN_IDS if s.endswith(("Sd015", "Sd020"))]
+        out = shake(ids, [float(f) for f in a.freqs.split(",")], a.workers)
+    report(f"validate_compliant_{a.part}" + ("_undamped" if a.undamped else ""), out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,43 @@
+"""The joints on the command line: --joints table-5.1, --kn alone, xi at omega_r; stored with the result."""
+import argparse
+
+import pytest
+
+from dem.cli import main
+from dem.cli.common import contact_law_settings
+from dem.formats.shake import load_shake
+
+
+def _ns(**kw) -> argparse.Namespace:
+    base = {"contact_law": None, "kn": None, "ks": None, "damping_beta": None, "damping_xi": None, "joints": None}
+    return argparse.Namespace(**(base | kw))
+
+
+def test_the_law_from_its_options():
+    assert contact_law_settings(_ns(), "Sh06-Sd015") == {}
+    assert contact_law_settings(_ns(kn=1e8), None) == {"contact_law": "compliant", "kn": 1e8}
+    assert contact_law_settings(_ns(kn=1e8, damping_xi=1.0), None) == {"contact_law": "compliant", "kn": 1e8,
+                                                                         "damping_xi": 1.0}
+    assert contact_law_settings(_ns(joints="table-5.1"), "Sh1-Sd020") == {"contact_law": "compliant", "kn": 4.1e8,
+                                                                          "damping_beta": 1.38e-3}
+
+
+def test_a_shake_on_the_studys_joints_stores_them(tmp_path, capsys):
+    assert main(["shake", "Sh06-Sd015", "--sine", "4", "--amplitude", "0.2", "--joints", "table-5.1",
+                 "--out", str(tmp_path), "--json"]) == 0
+    (path,) = tmp_path.glob("*.h5")
+    st = load_shake(path)["settings"]
+    assert (st.contact_law, st.kn, st.damping_beta) == ("compliant", pytest.approx(4.34e8), pytest.approx(2.61e-3))
+
+
+def test_a_campaign_on_the_studys_joints(tmp_path):
+    """The campaign's tilt step on Table 5.1's joints: the law in the parameters, lambda within 3 % of the LP."""
+    import csv
+    import json
+
+    assert main(["campaign", "--specimens", "Sh06-Sd015", "--steps", "tilt", "--joints", "table-5.1", "--quick",
+                 "--out", str(tmp_path)]) == 0
+    assert json.loads((tmp_path / "campaign.json").read_text())["parameters"]["joints"] == "table-5.1"
+    with open(tmp_path / "tilt" / "tilt.csv", newline="") as fh:
+        (row,) = list(csv.DictReader(fh))
+    assert abs(float(row["err_reference_vs_lp_pct"])) < 3.0

@@ -1,0 +1,60 @@
+"""The compliant contact law: its settings, its point stiffnesses and omega_r against hand computations."""
+import math
+
+import pytest
+
+from dem.core.contact import (
+    describe,
+    highest_frequency,
+    point_stiffness,
+    rayleigh_beta,
+    rotational_impact_frequency,
+)
+from dem.core.model import as_model, single_block
+from dem.core.settings import Settings
+from specimens.errors import ArchdemInputError
+
+
+@pytest.mark.parametrize("kw, msg", [
+    ({"contact_law": "compliant"}, "needs the normal joint stiffness kn > 0"),
+    ({"contact_law": "compliant", "kn": -1.0}, "kn must be a number >= 0"),
+    ({"contact_law": "compliant", "kn": float("inf")}, "kn must be a number >= 0"),
+    ({"contact_law": "compliant", "kn": 1e8, "damping_xi": 2.5}, "outside 0-2"),
+    ({"contact_law": "compliant", "kn": 1e8, "damping_xi": 1.0, "damping_beta": 1e-3}, "not both"),
+    ({"kn": 1e8}, "belong to the compliant contact law"),
+    ({"contact_law": "soft"}, "is not one of rigid, compliant"),
+])
+def test_bad_contact_law_settings(kw, msg):
+    with pytest.raises(ArchdemInputError, match=msg):
+        Settings(**kw)
+
+
+def test_the_law_round_trips_through_a_result_file():
+    s = Settings(contact_law="compliant", kn=4.34e8, damping_xi=1.0)
+    assert Settings.from_dict(s.to_dict()) == s and Settings().contact_law == "rigid"
+
+
+def test_a_blocks_points_omega_r_and_xi():
+    """Block b x h x w: each corner carries k_n b w / 4; omega_r = sqrt(k_n A b^2 / J_o) about a base
+    corner, J_o = m (b^2 + h^2) / 3; xi at omega_r gives beta_R = 2 xi / omega_r."""
+    b, h, w, rho, kn = 0.2, 0.4, 0.1, 500.0, 1e7
+    model = single_block(b, h, w, rho)
+    m = rho * b * h * w
+    assert point_stiffness(model, kn) == pytest.approx([kn * b * w / 4])
+    w_r = math.sqrt(kn * b * w * b * b / (m * (b * b + h * h) / 3))
+    assert rotational_impact_frequency(model, kn) == pytest.approx(w_r, rel=1e-12)
+    s = Settings(contact_law="compliant", kn=kn, damping_xi=0.5)
+    assert rayleigh_beta(s, model) == pytest.approx(1.0 / w_r, rel=1e-12)
+    assert describe(s, model)["damping_beta"] == pytest.approx(1.0 / w_r) and describe(Settings(), model) == {
+        "contact_law": "rigid"}
+    # the estimate bounds the block's own highest frequency (vertical sqrt(k_n A / m) at most)
+    assert highest_frequency(model, kn) >= math.sqrt(kn * b * w / m)
+
+
+def test_omega_r_of_the_catalogue_is_of_the_studys_order():
+    """docs/physics/modes.md#4: reading k_n per unit area, the free blocks of Sh06-Sd015 give 401 rad/s
+    against the table's 383."""
+    from specimens.catalogue import STUDY_JOINTS
+
+    kn, w_r, _ = STUDY_JOINTS["Sh06-Sd015"]
+    assert rotational_impact_frequency(as_model("Sh06-Sd015", config="free"), kn) == pytest.approx(w_r, rel=0.06)

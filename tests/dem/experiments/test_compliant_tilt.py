@@ -1,0 +1,29 @@
+"""Tilt tests on compliant joints: the study's stiff joints keep the LP's lambda, soft ones lower it,
+and the result file keeps the law."""
+
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.tilt import TiltProtocol, tilt
+from dem.experiments.tilt_check import check_result
+from dem.formats.tilt import load_result, save_result
+from specimens import get_specimen
+from specimens.blocks import discretise
+from specimens.catalogue import STUDY_JOINTS
+from specimens.constants import NO_SLIDING_MU
+
+
+def _tilt(kn: float, beta: float):
+    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
+    st = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, contact_law="compliant", kn=kn, damping_beta=beta)
+    res = tilt(from_assembly(asm, name="Sh06-Sd015"), st, TiltProtocol(), label="Sh06-Sd015", assembly=asm)
+    return res, check_result(res, asm)
+
+
+def test_the_studys_joints_keep_the_lp_lambda_and_soft_ones_lower_it(tmp_path):
+    kn, _, beta = STUDY_JOINTS["Sh06-Sd015"]
+    res, c = _tilt(kn, beta)
+    assert abs(c.rel_err) < 0.03 and c.mode == "rocking"
+    _, soft = _tilt(1e7, beta)  # joints 43 times softer: the deformed arch loses more than 5 % of its lambda
+    assert soft.lam < 0.95 * c.lam
+    back = load_result(save_result(res, tmp_path / "t.h5"))
+    assert (back.settings.contact_law, back.settings.kn, back.settings.damping_beta) == ("compliant", kn, beta)
