@@ -320,9 +320,9 @@ def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> d
     """The contact-law fields of :class:`dem.core.settings.Settings` from the command line ({} = rigid),
     for the specimen ``specimen_id`` (``--joints table-5.1``) and the engine ``args.engine``."""
     out = _contact_law(args, specimen_id)
-    if out and getattr(args, "engine", None) == "mujoco":
-        raise ArchdemInputError("compliant joints run on --engine pybullet: on MuJoCo their friction creeps under "
-                                "sustained shear (docs/engines.md#10-compliant-joints)")
+    if out and getattr(args, "engine", None) == "mujoco" and not (out.get("damping_beta") or out.get("damping_xi")):
+        raise ArchdemInputError("compliant joints on --engine mujoco need --damping-beta or --damping-xi: undamped, the "
+                                "blocks keep bouncing on their springs and the joints slip (docs/engines.md#10-compliant-joints)")
     return out
 
 

@@ -57,8 +57,8 @@ class MuJoCoOptions:
     margin: float = 0.0  # [m] contact margin; inflated hulls already touch at step 0
     compliant_impedance: float = 0.001  # impedance d of compliant joints: small d makes MuJoCo's contact a
     #   spring of stiffness -solref[0] / ((1 - d) A) (A: the pair's inverse mass); 0.01 put a block's frequencies 1-2 % low
-    compliant_impratio: float = 1e4  # friction-to-normal impedance ratio with compliant joints (friction still
-    #   creeps under sustained shear whatever it is: docs/engines.md#10-compliant-joints)
+    compliant_impratio: float = 1e4  # friction-to-normal impedance ratio with compliant joints: friction rows
+    #   nearly hard (R 0.1 A) while the normal ones are soft (R 999 A)
     extra: dict = field(default_factory=dict)  # other <option> attributes, verbatim
 
     def with_(self, **kw) -> "MuJoCoOptions":
@@ -163,8 +163,8 @@ def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_
 
     With impedance ``d`` MuJoCo's contact force is ``-(k r + c v) / ((1 - d) A)`` in the soft limit
     (``A`` the pair's inverse mass, ``1/m_a + 1/m_b``), so ``solref = -(k_pt, c_pt) (1 - d) A``. The friction
-    rows' damping ``d / h`` (``h`` the internal step) would take a sticking joint's slip velocity out within
-    one step; they still creep under sustained shear (docs/engines.md#10-compliant-joints)."""
+    rows get the damping ``d / h`` (``h`` the internal step), which takes a sticking joint's slip velocity out
+    within one step: with the normal rows' small damping instead, a tilted arch slides apart."""
     from dem.core.contact import point_stiffness, rayleigh_beta
 
     d = o.compliant_impedance
