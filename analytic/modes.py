@@ -30,9 +30,17 @@ from specimens.errors import ArchdemInputError
 #: for its quadratic integrand), or lumped at the contact's two ends as the DEM engines' corner contacts are.
 SPRINGS = {"bed": ((0.5 - 0.5 / math.sqrt(3.0), 0.5), (0.5 + 0.5 / math.sqrt(3.0), 0.5)),
            "ends": ((0.0, 0.5), (1.0, 0.5))}
-#: Shear over normal joint stiffness when only k_n is given: (5/6) G / E of an isotropic material
-#: with Poisson's ratio 0.2, as the normal and shear stiffnesses of one block's depth relate.
-KS_OVER_KN = 5.0 / 6.0 / (2.0 * 1.2)
+#: Poisson's ratio of the blocks when none is given (concrete, masonry units).
+POISSON = 0.2
+
+
+def ks_over_kn(poisson: float = POISSON) -> float:
+    """Shear over normal joint stiffness of the same block length: (5/6) G / E, G = E / (2 (1 + nu))."""
+    return 5.0 / 6.0 / (2.0 * (1.0 + poisson))
+
+
+#: Shear over normal joint stiffness when only k_n is given.
+KS_OVER_KN = ks_over_kn()
 
 
 def _positive(name: str, v) -> float:

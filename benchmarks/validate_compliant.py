@@ -3,8 +3,8 @@
 * ``vibration``: a block's vertical and rocking free vibration in both engines against the closed forms
   of its springs (at the base's two ends) and ``analytic.modes``, and the vertical damping ratio
   against ``beta_R omega / 2``;
-* ``tilt``: the no-sliding tilt lambda of the catalogue with the study's joints (Table 5.1) against
-  the LP, and how lambda moves with k_n on one specimen;
+* ``tilt``: the no-sliding tilt lambda of the catalogue with the study's joints (Table 5.1; ``--beta``
+  another damping) against the LP, and how lambda moves with k_n on one specimen;
 * ``shake``: one-cycle sine thresholds of the Sd 0.15/0.20 specimens at 2-10 Hz with the study's
   joints, beside the rigid DEM and the four-bar.
 
@@ -56,7 +56,7 @@ def vibration(engines: list[str]) -> dict:
     return {"block": BLOCK, "dt": 1e-4, "rows": rows}
 
 
-def tilt(engines: list[str], ids: list[str], damped: bool = True) -> dict:
+def tilt(engines: list[str], ids: list[str], beta: float | None = None) -> dict:
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.tilt import TiltProtocol
@@ -67,7 +67,7 @@ def tilt(engines: list[str], ids: list[str], damped: bool = True) -> dict:
     from specimens.constants import NO_SLIDING_MU
 
     rows = []
-    plan = [(sid, eng, STUDY_JOINTS[sid][0], STUDY_JOINTS[sid][2] if damped else 0.0) for eng in engines for sid in ids]
+    plan = [(sid, eng, STUDY_JOINTS[sid][0], STUDY_JOINTS[sid][2] if beta is None else beta) for eng in engines for sid in ids]
     if "pybullet" in engines:  # how lambda moves with k_n
         plan += [("Sh06-Sd015", "pybullet", kn, STUDY_JOINTS["Sh06-Sd015"][2]) for kn in (1e7, 3e7, 1e8)]
     for sid, eng, kn, beta in plan:
@@ -118,17 +118,19 @@ def main() -> None:
     ap.add_argument("--freqs", default="2,4,6,8,10")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--undamped", action="store_true", help="tilt: the study's k_n without its damping")
+    ap.add_argument("--beta", type=float, default=None,
+                    help="tilt: this beta_R [s] instead of the study's (MuJoCo's step shrinks as 1 / beta_R)")
     a = ap.parse_args()
     engines = a.engines.split(",")
     if a.part == "vibration":
         out = vibration(engines)
     elif a.part == "tilt":
-        out = tilt(engines, a.ids.split(",") if a.ids else list(SPECIMEN_IDS), not a.undamped)
+        out = tilt(engines, a.ids.split(",") if a.ids else list(SPECIMEN_IDS), 0.0 if a.undamped else a.beta)
     else:
         ids = a.ids.split(",") if a.ids else [s for s in SPECIMEN_IDS if s.endswith(("Sd015", "Sd020"))]
         out = shake(ids, [float(f) for f in a.freqs.split(",")], a.workers)
     report(f"validate_compliant_{a.part}" + (f"_{a.engines.replace(',', '_')}" if a.part == "tilt" else "")
-           + ("_undamped" if a.undamped else ""), out)
+           + ("_undamped" if a.undamped else f"_beta{a.beta:g}" if a.beta is not None else ""), out)
 
 
 if __name__ == "__main__":

@@ -42,7 +42,8 @@ class CampaignContext:
         j = self.joints
         damping = (f"beta_R {j['damping_beta']:g} s" if j.get("damping_beta") else
                    f"xi {j['damping_xi']:g} at omega_r" if j.get("damping_xi") else "no damping")
-        return f"Compliant joints: k_n {j['kn']:.3g} Pa/m, {damping}."
+        stiffness = f"k_n {j['kn']:.3g} Pa/m" if j.get("kn") else f"k_n = E / block length, E {j['youngs']:.3g} Pa"
+        return f"Compliant joints: {stiffness}, {damping}."
 
     def contact_of(self, spec) -> float:
         """The effective contact of ``spec``'s joints in this campaign."""

@@ -18,6 +18,9 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     import numpy as np
 
     from analytic.modes import modes
+    from dem.core.contact import normal_stiffness
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
     from dem.plotting.modes import save_mode_shapes
     from specimens.blocks import discretise
     from specimens.catalogue import STUDY_JOINTS
@@ -26,7 +29,9 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     rows, figures, drawn = [], [], set()
     for s in ctx.specimens:
         asm = discretise(s.arch, config=ctx.config, **({"contact": ctx.contact_of(s)} if ctx.contact_of(s) != 1.0 else {}))
-        kn = ctx.law_of(s).get("kn") or STUDY_JOINTS.get(s.id, (kn_median,))[0]
+        law = ctx.law_of(s)
+        kn = (normal_stiffness(Settings(**law), from_assembly(asm)) if law
+              else STUDY_JOINTS.get(s.id, (kn_median,))[0])
         res = modes(asm, kn)
         f = res.frequencies_hz
         rows.append({"id": s.id, "Sh": round(s.arch.Sh, 3), "Sd": round(s.arch.Sd, 3), "kn_Pa_per_m": kn,

@@ -306,6 +306,8 @@ def add_contact_law_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--contact-law", dest="contact_law", choices=CONTACT_LAWS, default=None,
                    help=f"joints: as stiff as the engine makes them, or springs (default {law}; compliant with --kn)")
     p.add_argument("--kn", type=float, default=None, help="normal joint stiffness per unit area [Pa/m] (compliant)")
+    p.add_argument("--youngs", type=float, default=None, metavar="E_PA",
+                   help="or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints")
     p.add_argument("--ks", type=float, default=None, help="not taken: the engines' joints stick rigidly until they slide")
     p.add_argument("--damping-beta", dest="damping_beta", type=float, default=None,
                    help="stiffness-proportional Rayleigh damping beta_R of the joints [s] "
@@ -329,7 +331,7 @@ def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> d
 def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
     from dem.core.settings import Settings
 
-    kn, beta, xi = (getattr(args, k, None) for k in ("kn", "damping_beta", "damping_xi"))
+    kn, youngs, beta, xi = (getattr(args, k, None) for k in ("kn", "youngs", "damping_beta", "damping_xi"))
     law = getattr(args, "contact_law", None)
     if getattr(args, "ks", None) is not None:
         raise ArchdemInputError("--ks: the engines' joints stick rigidly until they slide; shear stiffness goes to "
@@ -337,25 +339,29 @@ def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str,
     if getattr(args, "joints", None) == "table-5.1":
         from specimens.catalogue import STUDY_JOINTS
 
-        if kn is not None or beta is not None or xi is not None or law == "rigid":
+        if kn is not None or youngs is not None or beta is not None or xi is not None or law == "rigid":
             raise ArchdemInputError("--joints table-5.1 sets the joints: give it without --contact-law rigid, --kn or --damping-*")
         if specimen_id not in STUDY_JOINTS:
             raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
         k, _, b = STUDY_JOINTS[specimen_id]
         return {"contact_law": "compliant", "kn": k, "damping_beta": b}
-    given = [n for n, v in (("--kn", kn), ("--damping-beta", beta), ("--damping-xi", xi)) if v is not None]
+    given = [n for n, v in (("--kn", kn), ("--youngs", youngs), ("--damping-beta", beta), ("--damping-xi", xi))
+             if v is not None]
     if law is None:
         law = "compliant" if given else default_of(Settings, "contact_law")
     if law == "rigid":
         if given:
             raise ArchdemInputError(f"{', '.join(given)} belong to --contact-law compliant, not rigid")
         return {}
-    if kn is None:
-        raise ArchdemInputError("--contact-law compliant needs --kn PA_PER_M (or --joints table-5.1)")
-    for name, v in (("--kn", kn), ("--damping-beta", beta), ("--damping-xi", xi)):
-        if v is not None and not (math.isfinite(v) and (v > 0 if name == "--kn" else v >= 0)):
-            raise ArchdemInputError(f"{name} must be a {'positive' if name == '--kn' else 'non-negative'} number, got {v}")
-    out = {"contact_law": "compliant", "kn": kn, **({"damping_beta": beta} if beta is not None else {}),
-           **({"damping_xi": xi} if xi is not None else {})}
+    if kn is None and youngs is None:
+        raise ArchdemInputError("--contact-law compliant needs --kn PA_PER_M or --youngs E_PA (or --joints table-5.1)")
+    if kn is not None and youngs is not None:
+        raise ArchdemInputError("give the joints' stiffness as --kn or as --youngs, not both")
+    for name, v in (("--kn", kn), ("--youngs", youngs), ("--damping-beta", beta), ("--damping-xi", xi)):
+        positive = name in ("--kn", "--youngs")
+        if v is not None and not (math.isfinite(v) and (v > 0 if positive else v >= 0)):
+            raise ArchdemInputError(f"{name} must be a {'positive' if positive else 'non-negative'} number, got {v}")
+    out = {"contact_law": "compliant", **({"kn": kn} if kn is not None else {"youngs": youngs}),
+           **({"damping_beta": beta} if beta is not None else {}), **({"damping_xi": xi} if xi is not None else {})}
     Settings(**out)  # the law's own checks (xi's range)
     return out

@@ -31,6 +31,27 @@ def _structure(args: argparse.Namespace):
     return label, discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
 
 
+def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None]:
+    """``(kn, ks)`` given, or from ``--youngs`` and ``--poisson`` over the blocks' length (dem.core.contact)."""
+    import math
+
+    from analytic.modes import ks_over_kn
+    from dem.core.contact import block_length
+    from dem.core.model import BaseSpec, Model, _specs
+
+    if (args.kn is None) == (args.youngs is None):
+        raise ArchdemInputError("give the joints' stiffness as --kn PA_PER_M or as --youngs E_PA")
+    if args.kn is not None:
+        return args.kn, args.ks
+    if not (math.isfinite(args.youngs) and args.youngs > 0):
+        raise ArchdemInputError(f"--youngs must be a positive modulus [Pa], got {args.youngs}")
+    if not (math.isfinite(args.poisson) and 0.0 <= args.poisson < 0.5):
+        raise ArchdemInputError(f"--poisson must be in [0, 0.5), got {args.poisson}")
+    bodies, joints = _specs(structure)
+    kn = args.youngs / block_length(Model("blocks", bodies, joints, BaseSpec((), 0.0), 1.0, 0))
+    return kn, (ks_over_kn(args.poisson) * kn if args.ks is None else args.ks)
+
+
 def _run(args: argparse.Namespace) -> int:
     from analytic.modes import modes
 
@@ -39,7 +60,8 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot:
         figure_file(args.plot)
     label, structure = _structure(args)
-    res = modes(structure, args.kn, args.ks, springs=args.springs)
+    kn, ks = _stiffness(args, structure)
+    res = modes(structure, kn, ks, springs=args.springs)
     out = {"id": label, **res.describe(args.count)}
     if args.plot:
         from dem.plotting.modes import save_mode_shapes
@@ -58,7 +80,7 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.modes import KS_OVER_KN, SPRINGS, modes
+    from analytic.modes import KS_OVER_KN, POISSON, SPRINGS, modes
     from dem.cli.common import default_of
     from specimens.blocks import discretise
 
@@ -68,7 +90,11 @@ def register(sub) -> None:
     p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
                    help="a rectangular block of half-width B and half-height H [m] instead of an arch")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
-    p.add_argument("--kn", type=float, required=True, help="normal joint stiffness per unit area [Pa/m]")
+    p.add_argument("--kn", type=float, default=None, help="normal joint stiffness per unit area [Pa/m]")
+    p.add_argument("--youngs", type=float, default=None, metavar="E_PA",
+                   help="or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints")
+    p.add_argument("--poisson", type=float, default=POISSON,
+                   help=f"the blocks' Poisson's ratio, for ks = (5/6) G / length with --youngs (default {POISSON:g})")
     p.add_argument("--ks", type=float, default=None,
                    help=f"shear joint stiffness per unit area [Pa/m] (default {KS_OVER_KN:.3f} kn)")
     p.add_argument("--springs", choices=tuple(SPRINGS), default=default_of(modes, "springs"),

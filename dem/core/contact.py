@@ -43,11 +43,33 @@ def rotational_impact_frequency(model: Model, kn: float) -> float:
     return math.sqrt(kn * A * j.length ** 2 / J_o)
 
 
+def block_length(model: Model) -> float:
+    """The blocks' mean length across their joints [m]: per body with two or more joints, the distance
+    between the middles of its first two; a body on one joint (a single block), twice its centroid's
+    distance from it."""
+    mids: dict[int, list[np.ndarray]] = {}
+    for j in model.joints:
+        for k in (j.a, j.b):
+            if k >= 0:
+                mids.setdefault(k, []).append(0.5 * (np.asarray(j.p_i, float) + np.asarray(j.p_e, float)))
+    lengths = []
+    for k, m in mids.items():
+        c = model.bodies[k].centroid[:2]
+        lengths.append(float(np.linalg.norm(m[1] - m[0])) if len(m) > 1 else 2.0 * float(np.linalg.norm(c - m[0])))
+    return float(np.mean(lengths))
+
+
+def normal_stiffness(settings: Settings, model: Model) -> float:
+    """The joints' k_n [Pa/m]: given, or ``E / L`` from the blocks' Young's modulus — a joint as the two
+    half-blocks it joins, in series, each ``E / (L / 2)`` per unit area (``L``: :func:`block_length`)."""
+    return float(settings.kn) if settings.kn else float(settings.youngs) / block_length(model)
+
+
 def rayleigh_beta(settings: Settings, model: Model) -> float:
     """The joints' stiffness-proportional damping coefficient beta_R [s]: given, or ``2 xi / omega_r``
     (a damping ratio ``xi`` at ``omega_r``: ``xi(omega) = beta_R omega / 2``)."""
     if settings.damping_xi:
-        return 2.0 * settings.damping_xi / rotational_impact_frequency(model, settings.kn)
+        return 2.0 * settings.damping_xi / rotational_impact_frequency(model, normal_stiffness(settings, model))
     return float(settings.damping_beta)
 
 
@@ -80,6 +102,7 @@ def describe(settings: Settings, model: Model) -> dict:
     """The law and its parameters as a result file stores them."""
     if settings.contact_law != "compliant":
         return {"contact_law": settings.contact_law}
-    return {"contact_law": "compliant", "kn": settings.kn, "damping_beta": rayleigh_beta(settings, model),
-            "damping_xi": settings.damping_xi, "omega_r": rotational_impact_frequency(model, settings.kn),
-            "point_stiffness": point_stiffness(model, settings.kn).tolist()}
+    kn = normal_stiffness(settings, model)
+    return {"contact_law": "compliant", "kn": kn, "youngs": settings.youngs, "damping_beta": rayleigh_beta(settings, model),
+            "damping_xi": settings.damping_xi, "omega_r": rotational_impact_frequency(model, kn),
+            "point_stiffness": point_stiffness(model, kn).tolist()}

@@ -55,6 +55,7 @@ class Settings:
     # springs and dashpots of these per-unit-area values at the engines' contact points (dem.core.contact)
     contact_law: str = "rigid"
     kn: float = 0.0  # [Pa/m] normal joint stiffness per unit area (compliant law)
+    youngs: float = 0.0  # [Pa] or the blocks' Young's modulus: k_n = E / (the blocks' length across their joints)
     damping_beta: float = 0.0  # [s] stiffness-proportional Rayleigh coefficient beta_R (compliant law)
     damping_xi: float = 0.0  # or the damping ratio at the rotational-impact frequency omega_r: beta_R = 2 xi / omega_r
 
@@ -94,17 +95,20 @@ class Settings:
     def _check_contact_law(self) -> None:
         if self.contact_law not in CONTACT_LAWS:
             raise ArchdemInputError(f"contact law {self.contact_law!r} is not one of {', '.join(CONTACT_LAWS)}")
-        for name in ("kn", "damping_beta", "damping_xi"):
+        for name in ("kn", "youngs", "damping_beta", "damping_xi"):
             v = getattr(self, name)
             if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
                 raise ArchdemInputError(f"{name} must be a number >= 0, got {v!r}")
         if self.contact_law == "rigid":
-            given = [n for n in ("kn", "damping_beta", "damping_xi") if getattr(self, n)]
+            given = [n for n in ("kn", "youngs", "damping_beta", "damping_xi") if getattr(self, n)]
             if given:
                 raise ArchdemInputError(f"{', '.join(given)} belong to the compliant contact law (contact_law 'compliant')")
             return
-        if not self.kn > 0:
-            raise ArchdemInputError("the compliant contact law needs the normal joint stiffness kn > 0 [Pa/m]")
+        if not (self.kn > 0 or self.youngs > 0):
+            raise ArchdemInputError("the compliant contact law needs the normal joint stiffness kn > 0 [Pa/m] "
+                                    "or the blocks' Young's modulus youngs > 0 [Pa]")
+        if self.kn and self.youngs:
+            raise ArchdemInputError("give the joints' stiffness as kn or as the blocks' Young's modulus, not both")
         if self.damping_xi > MAX_DAMPING_XI:
             raise ArchdemInputError(f"damping ratio xi = {self.damping_xi:g} is outside 0-{MAX_DAMPING_XI:g}")
         if self.damping_beta and self.damping_xi:

@@ -92,9 +92,9 @@ def largest_step(model: Model, settings: Settings, options: MuJoCoOptions) -> fl
     costs many steps: at the study's joints, beta_R omega_max ~ 30)."""
     if settings.contact_law != "compliant":
         return options.max_dt
-    from dem.core.contact import highest_frequency, rayleigh_beta
+    from dem.core.contact import highest_frequency, normal_stiffness, rayleigh_beta
 
-    w = highest_frequency(model, settings.kn)
+    w = highest_frequency(model, normal_stiffness(settings, model))
     return min(options.max_dt, 1.0 / w, 1.0 / max(rayleigh_beta(settings, model) * w * w, 1e-30))
 
 
@@ -165,7 +165,7 @@ def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_
     (``A`` the pair's inverse mass, ``1/m_a + 1/m_b``), so ``solref = -(k_pt, c_pt) (1 - d) A``. The friction
     rows get the damping ``d / h`` (``h`` the internal step), which takes a sticking joint's slip velocity out
     within one step: with the normal rows' small damping instead, a tilted arch slides apart."""
-    from dem.core.contact import point_stiffness, rayleigh_beta
+    from dem.core.contact import normal_stiffness, point_stiffness, rayleigh_beta
 
     d = o.compliant_impedance
     beta = rayleigh_beta(settings, model)
@@ -173,7 +173,7 @@ def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_
     geoms = [[f"b{i}p{k}" for k in range(len(b.pieces))] for i, b in enumerate(model.bodies)]
     base_geoms = [f"base{k}" for k in range(len(model.base.pieces))]
     pairs, excl, seen = [], [], set()
-    for j, kp in zip(model.joints, point_stiffness(model, settings.kn)):
+    for j, kp in zip(model.joints, point_stiffness(model, normal_stiffness(settings, model))):
         key = (min(j.a, j.b), max(j.a, j.b))
         if key in seen:
             continue

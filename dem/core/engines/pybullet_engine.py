@@ -245,10 +245,10 @@ class PyBulletEngine(Engine):
         """Springs and dashpots at the contact points (dem.core.contact): Bullet combines two bodies'
         stiffnesses in series and adds their dampings, so each body gets twice its point stiffness
         and half its point damping (exact for a joint between bodies of equal joints)."""
-        from dem.core.contact import body_point_stiffness, rayleigh_beta
+        from dem.core.contact import body_point_stiffness, normal_stiffness, rayleigh_beta
 
         beta = rayleigh_beta(settings, model)
-        k_bodies, k_base = body_point_stiffness(model, settings.kn)
+        k_bodies, k_base = body_point_stiffness(model, normal_stiffness(settings, model))
         for bid, k in [*zip(self._ids, k_bodies), (self._base, k_base)]:
             self._p.changeDynamics(bid, -1, contactStiffness=float(significant(2.0 * k)),
                                    contactDamping=float(significant(0.5 * beta * k)))

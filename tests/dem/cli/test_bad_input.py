@@ -9,6 +9,10 @@ from dem.cli import main
 
 @pytest.mark.parametrize("argv, msg", [
     (["tilt", "Sh06-Sd015", "--kn", "-1"], "--kn must be a positive number"),
+    (["tilt", "Sh06-Sd015", "--youngs=-1e9"], "--youngs must be a positive number"),
+    (["shake", "Sh06-Sd015", "--sine", "4", "--amplitude", "0.3", "--kn", "1e8", "--youngs", "1e9"], "--kn or as --youngs"),
+    (["modes", "Sh06-Sd015"], "give the joints' stiffness as --kn PA_PER_M or as --youngs E_PA"),
+    (["modes", "Sh06-Sd015", "--youngs", "1e9", "--poisson", "0.7"], "--poisson must be in [0, 0.5)"),
     (["tilt", "Sh06-Sd015", "--contact-law", "rigid", "--kn", "1e8"], "--kn belong to --contact-law compliant"),
     (["tilt", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "0.2", "--joints", "table-5.1"], "catalogue specimens only"),
     (["tilt", "Sh06-Sd015", "--joints", "table-5.1", "--kn", "1e8"], "--joints table-5.1 sets the joints"),

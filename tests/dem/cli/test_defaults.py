@@ -18,7 +18,7 @@ def _lib():
     from analytic.calibration import CALIBRATION_FILE
     from analytic.domain import failure_domain
     from analytic.kinematic import Height
-    from analytic.modes import modes
+    from analytic.modes import POISSON, modes
     from analytic.spectra import ntc2018
     from analytic.summary import analyse
     from dem.campaign.context import CampaignContext
@@ -62,7 +62,8 @@ def _lib():
         "animate": {"fps": default_of(animate, "fps"), "frames": default_of(animate, "max_frames")},
         "fragility": {"config": default_of(discretise, "config"), "mu_joint": s.mu_joint, "mu_base": s.mu_base,
                       "engine": s.engine, "friction_cov": DEFAULT_FRICTION_COV},
-        "modes": {"config": default_of(discretise, "config"), "springs": default_of(modes, "springs")},
+        "modes": {"config": default_of(discretise, "config"), "springs": default_of(modes, "springs"),
+                  "poisson": POISSON},
         "compare-engines": {"config": default_of(compare, "config"), "engines": ",".join(default_of(compare, "engines"))},
     }
 

@@ -6,6 +6,7 @@ import pytest
 from dem.core.contact import (
     describe,
     highest_frequency,
+    normal_stiffness,
     point_stiffness,
     rayleigh_beta,
     rotational_impact_frequency,
@@ -23,6 +24,8 @@ from specimens.errors import ArchdemInputError
     ({"contact_law": "compliant", "kn": 1e8, "damping_xi": 1.0, "damping_beta": 1e-3}, "not both"),
     ({"kn": 1e8}, "belong to the compliant contact law"),
     ({"contact_law": "soft"}, "is not one of rigid, compliant"),
+    ({"contact_law": "compliant", "kn": 1e8, "youngs": 1e9}, "as kn or as the blocks' Young's modulus, not both"),
+    ({"contact_law": "compliant", "youngs": -1e9}, "youngs must be a number >= 0"),
 ])
 def test_bad_contact_law_settings(kw, msg):
     with pytest.raises(ArchdemInputError, match=msg):
@@ -49,6 +52,22 @@ def test_a_blocks_points_omega_r_and_xi():
         "contact_law": "rigid"}
     # the estimate bounds the block's own highest frequency (vertical sqrt(k_n A / m) at most)
     assert highest_frequency(model, kn) >= math.sqrt(kn * b * w / m)
+
+
+def test_kn_from_the_blocks_youngs_modulus():
+    """k_n = E / L: a block's L is its height; a free voussoir's the chord between its joints' middles,
+    2 Rp sin(half the voussoir's angle) for the equal voussoirs of a round arch."""
+    import numpy as np
+
+    from specimens import PointedArch
+
+    st = Settings(contact_law="compliant", youngs=2e9)
+    assert normal_stiffness(st, single_block(0.2, 0.4)) == pytest.approx(2e9 / 0.4)
+    arch = PointedArch(e=0.0, t=0.05, Rp=0.3, width=0.1)
+    m = as_model(arch, config="free", n_voussoirs=9)
+    L = 2 * 0.3 * np.sin(np.pi / (2 * 19))  # nine voussoirs a side and the crown: 19 equal ones over a half circle
+    assert normal_stiffness(st, m) == pytest.approx(2e9 / L, rel=1e-6)
+    assert normal_stiffness(Settings(contact_law="compliant", kn=3e8), m) == 3e8
 
 
 def test_omega_r_of_the_catalogue_is_of_the_studys_order():
