@@ -11,11 +11,9 @@ MODES_LISTED = 6
 
 
 def step_modes(ctx: CampaignContext, d: Path) -> dict:
-    """First natural frequencies of each specimen (its blocks on the campaign's compliant joints, else on the
-    Table 5.1 joints, or the table's median k_n for a specimen outside it), and the first mode shapes of one per rise."""
+    """First natural frequencies of each specimen (its blocks on the campaign's compliant joints, else on its
+    Table 5.1 joints), and the first mode shapes of one specimen per rise."""
     import json
-
-    import numpy as np
 
     from analytic.modes import modes
     from dem.core.contact import normal_stiffness
@@ -25,13 +23,12 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     from specimens.blocks import discretise
     from specimens.catalogue import STUDY_JOINTS
 
-    kn_median = float(np.median([v[0] for v in STUDY_JOINTS.values()]))
     rows, figures, drawn = [], [], set()
     for s in ctx.specimens:
-        asm = discretise(s.arch, config=ctx.config, **({"contact": ctx.contact_of(s)} if ctx.contact_of(s) != 1.0 else {}))
+        c = ctx.contact_of(s)
+        asm = discretise(s.arch, config=ctx.config, **({"contact": c} if c != 1.0 else {}))
         law = ctx.law_of(s)
-        kn = (normal_stiffness(Settings(**law), from_assembly(asm)) if law
-              else STUDY_JOINTS.get(s.id, (kn_median,))[0])
+        kn = normal_stiffness(Settings(**law), from_assembly(asm)) if law else STUDY_JOINTS[s.id][0]
         res = modes(asm, kn)
         f = res.frequencies_hz
         rows.append({"id": s.id, "Sh": round(s.arch.Sh, 3), "Sd": round(s.arch.Sd, 3), "kn_Pa_per_m": kn,
@@ -47,8 +44,9 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     lo = min(r["f1_Hz"] for r in rows)
     hi = max(r["f1_Hz"] for r in rows)
     return {
-        "summary": f"Natural frequencies of the {ctx.config} blocks on compliant joints (springs at the joints' ends, "
-                   "k_n of the study's Table 5.1, k_s = 0.347 k_n), at rest under gravity.",
+        "summary": f"Natural frequencies of the {ctx.config} blocks on compliant joints at rest under gravity (springs at "
+                   "the joints' ends, k_s = 0.347 k_n; k_n "
+                   + ("of the campaign's joints)." if ctx.joints and ctx.joints != "table-5.1" else "of the study's Table 5.1)."),
         "tables": [{"name": "modes", "title": "Natural frequencies [Hz]", "csv": "modes/modes.csv"}],
         "figures": figures,
         "findings": [f"First natural frequency {lo:.1f}-{hi:.1f} Hz over {len(rows)} specimens: far above the "

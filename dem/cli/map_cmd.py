@@ -61,8 +61,8 @@ def _run(args: argparse.Namespace) -> int:
     piers = piers_from_args(args)
     for s in specs if piers is not None else ():
         piers.check(s.arch)
-    law = contact_law_settings(args, specs[0].id if len(specs) == 1 else None) if args.joints is None or len(specs) == 1 \
-        else contact_law_settings(args, "several specimens")
+    # --joints table-5.1 on a map: of its one specimen (a study's settings are common to its cases)
+    law = contact_law_settings(args, specs[0].id if len(specs) == 1 else "several specimens")
     settings = ({"engine": args.engine} if args.engine != default_of(Settings, "engine") else {}) | law
     path, resume = study_path(args, "runs/map", f"map-{args.config}")
     if args.plot:

@@ -37,7 +37,9 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
 
     from analytic.modes import ks_over_kn
     from dem.core.contact import block_length
-    from dem.core.model import BaseSpec, Model, _specs
+    from dem.core.model import from_assembly
+    from dem.core.model import single_block as block_model
+    from specimens.frame import Block
 
     if (args.kn is None) == (args.youngs is None):
         raise ArchdemInputError("give the joints' stiffness as --kn PA_PER_M or as --youngs E_PA")
@@ -47,8 +49,9 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
         raise ArchdemInputError(f"--youngs must be a positive modulus [Pa], got {args.youngs}")
     if not (math.isfinite(args.poisson) and 0.0 <= args.poisson < 0.5):
         raise ArchdemInputError(f"--poisson must be in [0, 0.5), got {args.poisson}")
-    bodies, joints = _specs(structure)
-    kn = args.youngs / block_length(Model("blocks", bodies, joints, BaseSpec((), 0.0), 1.0, 0))
+    model = (block_model(2 * structure.b, 2 * structure.h, structure.width) if isinstance(structure, Block)
+             else from_assembly(structure))
+    kn = args.youngs / block_length(model)
     return kn, (ks_over_kn(args.poisson) * kn if args.ks is None else args.ks)
 
 

@@ -97,12 +97,3 @@ def highest_frequency(model: Model, kn: float) -> float:
         w2 = max(w2, s)
     return math.sqrt(w2)
 
-
-def describe(settings: Settings, model: Model) -> dict:
-    """The law and its parameters as a result file stores them."""
-    if settings.contact_law != "compliant":
-        return {"contact_law": settings.contact_law}
-    kn = normal_stiffness(settings, model)
-    return {"contact_law": "compliant", "kn": kn, "youngs": settings.youngs, "damping_beta": rayleigh_beta(settings, model),
-            "damping_xi": settings.damping_xi, "omega_r": rotational_impact_frequency(model, kn),
-            "point_stiffness": point_stiffness(model, kn).tolist()}
