@@ -27,10 +27,9 @@ class CampaignContext:
         if not self.joints:
             return {}
         if self.joints == "table-5.1":
-            from specimens.catalogue import STUDY_JOINTS
+            from dem.core.contact import study_joints
 
-            kn, _, beta = STUDY_JOINTS[spec.id]
-            return {"contact_law": "compliant", "kn": kn, "damping_beta": beta}
+            return study_joints(spec.id)
         return dict(self.joints)
 
     def joints_text(self) -> str:

@@ -16,19 +16,17 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     import json
 
     from analytic.modes import modes
-    from dem.core.contact import normal_stiffness
+    from dem.core.contact import normal_stiffness, study_joints
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.plotting.modes import save_mode_shapes
     from specimens.blocks import discretise
-    from specimens.catalogue import STUDY_JOINTS
 
     rows, figures, drawn = [], [], set()
     for s in ctx.specimens:
         c = ctx.contact_of(s)
         asm = discretise(s.arch, config=ctx.config, **({"contact": c} if c != 1.0 else {}))
-        law = ctx.law_of(s)
-        kn = normal_stiffness(Settings(**law), from_assembly(asm)) if law else STUDY_JOINTS[s.id][0]
+        kn = normal_stiffness(Settings(**(ctx.law_of(s) or study_joints(s.id))), from_assembly(asm))
         res = modes(asm, kn)
         f = res.frequencies_hz
         rows.append({"id": s.id, "Sh": round(s.arch.Sh, 3), "Sd": round(s.arch.Sd, 3), "kn_Pa_per_m": kn,

@@ -296,6 +296,8 @@ def parse_grid(text: str, what: str = "--freq") -> list[float]:
 
 #: ``--joints`` sets: the reference study's compliant joints of a catalogue specimen.
 JOINT_SETS = ("table-5.1",)
+#: The destinations of :func:`add_contact_law_arguments`.
+CONTACT_LAW_DESTS = ("contact_law", "kn", "youngs", "ks", "damping_beta", "damping_xi", "joints")
 
 
 def add_contact_law_arguments(p: argparse.ArgumentParser) -> None:
@@ -337,14 +339,11 @@ def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str,
         raise ArchdemInputError("--ks: the engines' joints stick rigidly until they slide; shear stiffness goes to "
                                 "archdem modes")
     if getattr(args, "joints", None) == "table-5.1":
-        from specimens.catalogue import STUDY_JOINTS
+        from dem.core.contact import study_joints
 
         if kn is not None or youngs is not None or beta is not None or xi is not None or law == "rigid":
             raise ArchdemInputError("--joints table-5.1 sets the joints: give it without --contact-law rigid, --kn or --damping-*")
-        if specimen_id not in STUDY_JOINTS:
-            raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
-        k, _, b = STUDY_JOINTS[specimen_id]
-        return {"contact_law": "compliant", "kn": k, "damping_beta": b}
+        return study_joints(specimen_id)
     given = [n for n, v in (("--kn", kn), ("--youngs", youngs), ("--damping-beta", beta), ("--damping-xi", xi))
              if v is not None]
     if law is None:

@@ -18,18 +18,6 @@ from dem.experiments.domain import analytic_domains, dem_failure_domain
 from specimens.errors import ArchdemInputError
 
 
-def _settings(args: argparse.Namespace, law: dict):
-    """The DEM's settings of the domain: None (the reference frictions, rigid joints) or with the joints given."""
-    if not law:
-        return None
-    from dem.core.settings import Settings
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-
-    mu_j, mu_b = getattr(args, "mu_joint", None), getattr(args, "mu_base", None)
-    return Settings(mu_joint=REFERENCE_MU_JOINT if mu_j is None else mu_j,
-                    mu_base=REFERENCE_MU_BASE if mu_b is None else mu_b, **law)
-
-
 def dem_domain(args: argparse.Namespace) -> int:
     """``archdem domain ID --engine dem --freq 2,4,6,8,10 [--plot FILE] [--json]``."""
     if getattr(args, "block", None) is not None:
@@ -54,7 +42,7 @@ def dem_domain(args: argparse.Namespace) -> int:
     res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
                              workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
-                             scheduler=getattr(args, "scheduler", None), settings=_settings(args, law))
+                             scheduler=getattr(args, "scheduler", None), joints=law or None)
     if args.plot:
         from dem.plotting.shake import plot_domain_over_analytic
 

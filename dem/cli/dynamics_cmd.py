@@ -5,6 +5,7 @@ import argparse
 import math
 
 from dem.cli.common import (
+    CONTACT_LAW_DESTS,
     add_arch_arguments,
     add_contact_law_arguments,
     arch_from_args,
@@ -126,8 +127,8 @@ def _run_domain(args: argparse.Namespace) -> int:
         return int(dem_domain(args) or 0)
     if args.scheduler:
         raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
-    if any(getattr(args, k) is not None for k in ("contact_law", "kn", "ks", "damping_beta", "damping_xi", "joints")):
-        raise ArchdemInputError("--contact-law, --kn, --damping-* and --joints are the DEM's joints (--engine dem)")
+    if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
+        raise ArchdemInputError("--contact-law, --kn, --youngs, --damping-* and --joints are the DEM's joints (--engine dem)")
     from analytic.domain import failure_domain
     from analytic.impact import post_impact
 

@@ -36,9 +36,10 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
     import math
 
     from analytic.modes import ks_over_kn
-    from dem.core.contact import block_length
+    from dem.core.contact import normal_stiffness
     from dem.core.model import from_assembly
     from dem.core.model import single_block as block_model
+    from dem.core.settings import Settings
     from specimens.frame import Block
 
     if (args.kn is None) == (args.youngs is None):
@@ -51,7 +52,7 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
         raise ArchdemInputError(f"--poisson must be in [0, 0.5), got {args.poisson}")
     model = (block_model(2 * structure.b, 2 * structure.h, structure.width) if isinstance(structure, Block)
              else from_assembly(structure))
-    kn = args.youngs / block_length(model)
+    kn = normal_stiffness(Settings(contact_law="compliant", youngs=args.youngs), model)
     return kn, (ks_over_kn(args.poisson) * kn if args.ks is None else args.ks)
 
 

@@ -65,6 +65,18 @@ def normal_stiffness(settings: Settings, model: Model) -> float:
     return float(settings.kn) if settings.kn else float(settings.youngs) / block_length(model)
 
 
+def study_joints(specimen_id: str) -> dict:
+    """The contact-law settings of the reference study's joints of a catalogue specimen (its Table 5.1:
+    ``k_n`` and ``beta_R`` as printed)."""
+    from specimens.catalogue import STUDY_JOINTS
+    from specimens.errors import ArchdemInputError
+
+    if specimen_id not in STUDY_JOINTS:
+        raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
+    kn, _, beta = STUDY_JOINTS[specimen_id]
+    return {"contact_law": "compliant", "kn": kn, "damping_beta": beta}
+
+
 def rayleigh_beta(settings: Settings, model: Model) -> float:
     """The joints' stiffness-proportional damping coefficient beta_R [s]: given, or ``2 xi / omega_r``
     (a damping ratio ``xi`` at ``omega_r``: ``xi(omega) = beta_R omega / 2``)."""

@@ -25,6 +25,7 @@ from dem.cli import main
     (["fragility", "Sh06-Sd015", "--sine", "2", "--amplitudes", "0.3:0.4:0.05", "--realizations", "2", "--kn", "1e8",
       "--damping-beta", "1e-3", "--damping-xi", "1"], "not both"),
     (["domain", "Sh06-Sd015", "--kn", "1e8"], "are the DEM's joints (--engine dem)"),
+    (["domain", "Sh06-Sd015", "--youngs", "1e9"], "are the DEM's joints (--engine dem)"),
     (["domain", "Sh06-Sd015", "--engine", "dem", "--kn", "inf"], "--kn must be a positive number"),
     (["map", "--kn", "nan"], "--kn must be a positive number"),
     (["map", "--joints", "table-5.1"], "not 'several specimens'"),
