@@ -23,7 +23,7 @@ class CampaignContext:
     joints: dict | str | None = None  # None: rigid; "table-5.1": the study's per specimen; or compliant-law settings
 
     def law_of(self, spec) -> dict:
-        """The contact-law settings of ``spec``'s joints in the tilt, shake, record and fragility steps ({} = rigid)."""
+        """The contact-law settings of ``spec``'s joints in every simulator step ({} = rigid)."""
         if not self.joints:
             return {}
         if self.joints == "table-5.1":

@@ -55,7 +55,7 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
         imp = Imperfection(cal.edge_loss, cal.edge_loss_sd if t else 0.0)
         ens = tilt_ensemble(s.id, s.arch, imp, n if t else 1, LAB_SEED, studies_dir(ctx) / f"lab-{s.id}.h5",
                             config=ctx.config, engine=ctx.engine, workers=ctx.workers, scheduler=ctx.scheduler,
-                            resume=True, progress=False)
+                            resume=True, progress=False, law=ctx.law_of(s))
         modes = Counter(ens.modes)
         mode = modes.most_common(1)[0][0] if modes else "failed"
         row = {
@@ -110,7 +110,7 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
             f"observed mode for {sum(r['mode_agrees'] for r in tested_rows)} of {len(tested_rows)}.",
         ]
     return {
-        "summary": f"Tilt tests of every specimen with imperfect joints: {cal.edge_loss * 1e3:.2f} mm lost at each joint "
+        "summary": ctx.joints_text() + " " + f"Tilt tests of every specimen with imperfect joints: {cal.edge_loss * 1e3:.2f} mm lost at each joint "
                    f"edge (calibrated on the laboratory tilt tests, {cal.source or 'archdem calibrate'}), {ctx.engine}, "
                    f"reference friction; {n} seeded realisations (seed {LAB_SEED}) of each tested specimen, the "
                    "nominal blocks of the others (predictions).",

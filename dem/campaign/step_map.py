@@ -29,7 +29,8 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
                         progress=True,
                         refine=refine,
                         settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None,
-                        contact={s.id: ctx.contact_of(s) for s in specs})
+                        contact={s.id: ctx.contact_of(s) for s in specs},
+                        law={s.id: ctx.law_of(s) for s in specs} if ctx.joints else None)
     write_csv(d / "map.csv", res.to_rows("summary"))
     write_csv(d / "map_points.csv", res.to_rows("points"))
     figs = res.figures(d / "figures")
@@ -56,7 +57,7 @@ def step_map(ctx: CampaignContext, d: Path) -> dict:
         if ids:
             findings.append(f"{text}: {', '.join(ids)}.")
     return {
-        "summary": f"Tilt test of {len(specs)} specimens swept over block-block friction ({mus}; base {REFERENCE_MU_BASE}), mu* refined by "
+        "summary": ctx.joints_text() + " " + f"Tilt test of {len(specs)} specimens swept over block-block friction ({mus}; base {REFERENCE_MU_BASE}), mu* refined by "
                    f"bisection ({res.rounds} round(s)); analytic LP and two-bar thresholds beside it. "
                    f"{res.n_cases} tilt tests, {res.n_failed} failed.",
         "tables": [{"name": "map", "title": "Friction thresholds mu* per specimen", "csv": "map/map.csv"},

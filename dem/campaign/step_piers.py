@@ -44,7 +44,7 @@ def step_piers(ctx: CampaignContext, d: Path) -> dict:
 
     spec, heights = piers_plan(ctx)
     contact = ctx.contact_of(spec)
-    eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
+    eng = ({"engine": ctx.engine} if ctx.engine != "pybullet" else {}) | ctx.law_of(spec) or None  # piers of the arch's blocks
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}  # the tilt test's own protocol
     cases = {h: make_case(spec.id, spec.arch, ctx.config, NO_SLIDING_MU, NO_SLIDING_MU, protocol=proto, settings=eng,
                           contact=contact, piers=_piers(spec, h)) for h in heights}
@@ -100,7 +100,7 @@ def step_piers(ctx: CampaignContext, d: Path) -> dict:
         f"({sum(e <= 3 for e in errs)} of {len(errs)} within 3 %).",
     ]
     return {
-        "summary": f"{spec.id} on two piers {PIER_WIDTH_T:g} ring thicknesses wide in {PIER_COURSES} courses, heights "
+        "summary": ctx.joints_text() + " " + f"{spec.id} on two piers {PIER_WIDTH_T:g} ring thicknesses wide in {PIER_COURSES} courses, heights "
                    f"{', '.join(f'{k:g}' for k in x)} times the rise: static LP and DEM tilt test ({ctx.engine}) with "
                    "no sliding, and the LP at the reference friction.",
         "tables": [{"name": "piers", "title": "Tilt lambda vs pier height", "csv": "piers/piers.csv"}],

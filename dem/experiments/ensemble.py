@@ -58,9 +58,10 @@ class EnsembleResult:
 def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: str | os.PathLike,
                   config: str = "glued", mu_joint: float = 0.577, mu_base: float = 1.0, engine: str = "pybullet",
                   workers: int | None = None, scheduler: str | None = None, resume: bool = False,
-                  progress: bool = True, n_voussoirs: int = 8) -> EnsembleResult:
+                  progress: bool = True, n_voussoirs: int = 8, law: dict | None = None) -> EnsembleResult:
     """``n`` tilt tests of ``arch`` (``n_voussoirs`` per side) with the joints of realisations
-    ``0..n-1`` of ``seed``; the study is stored in ``out_path``."""
+    ``0..n-1`` of ``seed`` (``law``: their contact-law settings, ``dem.core.contact.study_joints``; rigid
+    by default); the study is stored in ``out_path``."""
     import time
 
     from dem.studies.cases import DEM_CASE, make_case
@@ -73,7 +74,7 @@ def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: s
         raise ArchdemInputError(f"the seed must be an integer >= 0, got {seed!r}")
     t0 = time.perf_counter()
     nominal = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=imperfection.contact(arch))
-    settings = None if engine == "pybullet" else {"engine": engine}
+    settings = ({} if engine == "pybullet" else {"engine": engine}) | (law or {}) or None
     base = make_case(label, arch, config, mu_joint, mu_base, ENSEMBLE_PROTOCOL, settings, n_voussoirs,
                      contact=nominal.contact)
     cases = []

@@ -354,7 +354,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   scheduler: str | None = None, resume: bool = False, progress: bool = True, refine: int = 3,
                   protocol: dict | None = None, settings: dict | None = None, func: str = DEM_CASE,
                   n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
-                  contact: float | Mapping[str, float] = 1.0, piers=None) -> MapResult:
+                  contact: float | Mapping[str, float] = 1.0, piers=None,
+                  law: Mapping[str, dict] | None = None) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each
@@ -366,7 +367,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     ``extra``: additional parameters merged into every case (e.g. ``{"synthetic": {...}}``);
     ``contact``: the effective contact of every joint (DEM cases and the LP / continuous references),
     or specimen id -> contact; ``piers``: every specimen stands on these
-    :class:`~specimens.piers.Piers` (the same sizes for all).
+    :class:`~specimens.piers.Piers` (the same sizes for all); ``law``: specimen id -> the contact-law
+    settings of its joints (``dem.core.contact.study_joints``), merged into ``settings``.
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
     from dem.studies.sweep import load_study, run_study
@@ -391,12 +393,13 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     scaled_protocol(protocol, 1.0)  # validate in the main process
     study_attrs = {"study": STUDY_KIND, "config": config, "mu_base": float(mu_base), "protocol": protocol,
                    "settings": dict(settings or {}), "n_voussoirs": int(n_voussoirs),
+                   **({"law": {k: dict(v) for k, v in law.items()}} if law else {}),
                    **({} if set(contact_of.values()) == {1.0} else {"contact": contact_of}),
                    **({} if piers is None else {"piers": piers.describe()})}
 
     def case(s, mu: float) -> dict:
-        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, settings, n_voussoirs, time_scale, contact_of[s.id],
-                      piers)
+        c = make_case(s.id, s.arch, config, mu, mu_base, protocol, {**(settings or {}), **(law or {}).get(s.id, {})} or None,
+                      n_voussoirs, time_scale, contact_of[s.id], piers)
         if extra:
             c.update(extra)
         return c

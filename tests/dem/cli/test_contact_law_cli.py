@@ -41,3 +41,22 @@ def test_a_campaign_on_the_studys_joints(tmp_path):
     with open(tmp_path / "tilt" / "tilt.csv", newline="") as fh:
         (row,) = list(csv.DictReader(fh))
     assert abs(float(row["err_reference_vs_lp_pct"])) < 3.0
+
+
+def test_the_campaigns_other_simulator_steps_on_the_studys_joints(tmp_path):
+    """Lab, map and piers run on the campaign's joints too: every case of their studies stores the law, their
+    summaries name it, and the arch on piers keeps within 3 % of the LP at every height."""
+    import csv
+    import json
+
+    from dem.studies.sweep import load_study
+
+    assert main(["campaign", "--specimens", "Sh06-Sd015", "--steps", "lab,map,piers", "--joints", "table-5.1",
+                 "--quick", "--workers", "2", "--out", str(tmp_path)]) == 0
+    for study in ("lab-Sh06-Sd015", "map", "piers"):
+        records = load_study(tmp_path / "studies" / f"{study}.h5").records
+        assert records and all(r.params["settings"]["kn"] == pytest.approx(4.34e8) for r in records), study
+    steps = json.loads((tmp_path / "campaign.json").read_text())["steps"]
+    assert all(steps[s]["outputs"]["summary"].startswith("Compliant joints") for s in ("lab", "map", "piers"))
+    with open(tmp_path / "piers" / "piers.csv", newline="") as fh:
+        assert all(abs(float(r["err_dem_vs_lp_pct"])) < 3.0 for r in csv.DictReader(fh))
