@@ -7,7 +7,8 @@ The model is built in memory as an MJCF string from the engine-neutral :class:`d
   (or, with ``settings.planar``, two slides x, y and a hinge z: an exact planar constraint),
   an explicit ``<inertial>`` with the mass and the full centroidal inertia tensor;
 * one convex mesh geom per convex piece (inline vertices of the prism, offset outward by
-  ``settings.inflate`` as for PyBullet so that touching faces are in contact at step 0); the
+  ``settings.inflate`` as for PyBullet so that touching faces are in contact at step 0; on compliant
+  joints not offset, the joints' springs on small spheres at their corners, ``_corner_spheres``); the
   base pads are static geoms of the world body, or, with a driven base (shake table), geoms of
   a body 10^6 times heavier than the arch on a horizontal slide joint whose velocity is set
   every step to the one that lands it on the prescribed position;
@@ -108,8 +109,11 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
     assets, world, bodies = [], [], []
     sol = f'solref="{_f(o.solref)}" solimp="{_f(o.solimp)}" condim="{o.condim}" margin="{_f(o.margin)}"'
 
+    compliant = settings.contact_law == "compliant"
+    spheres = _corner_spheres(model) if compliant else []
+
     def mesh(name: str, poly, width: float, z: float, c: np.ndarray) -> None:
-        m = prism(poly, width, settings.inflate)
+        m = prism(poly, width, 0.0 if compliant else settings.inflate)  # springs unloaded at the drawn blocks
         v = np.asarray(m.vertices, float).copy()
         v[:, 2] += z
         assets.append(f'<mesh name="{name}" vertex="{_f(on_grid(v - c))}"/>')
@@ -132,6 +136,8 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
             mesh(nm, poly, b.width, float(c[2]), c)
             geoms.append(f'<geom name="{nm}" type="mesh" mesh="{nm}" friction="{_f(settings.mu_joint)} 0 0" '
                          f'priority="0" {sol}/>')
+        geoms += [f'<geom name="{sp.name}" type="sphere" size="{_f(CORNER_SPHERE)}" pos="{_f(on_grid(sp.pos - c))}" '
+                  'contype="0" conaffinity="0"/>' for sp in spheres if sp.body == i]
         if settings.planar:
             joints = ('<joint name="j{i}x" type="slide" axis="1 0 0" damping="0"/>'
                       '<joint name="j{i}y" type="slide" axis="0 1 0" damping="0"/>'
@@ -141,7 +147,7 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
         inertial = (f'<inertial pos="0 0 0" mass="{_f(significant(b.mass))}" '
                     f'fullinertia="{_f([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])}"/>')
         bodies.append(f'<body name="body{i}" pos="{_f(c)}">{joints}{inertial}{"".join(geoms)}</body>')
-    contact = _compliant_pairs(model, settings, o, driven_base, h) if settings.contact_law == "compliant" else ""
+    contact = _compliant_pairs(model, settings, o, driven_base, h, spheres) if compliant else ""
     if contact:
         opt_extra += f' impratio="{_f(o.compliant_impratio)}"'
     g = settings.g
@@ -157,9 +163,44 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
     )
 
 
-def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_base: bool, h: float) -> str:
-    """``<contact>``: for every joint, explicit geom pairs of its two bodies carrying the joint's spring
-    and dashpot (dem.core.contact), and the same body pairs excluded from MuJoCo's own contacts.
+#: Radius of the spheres that carry a compliant joint's corners [m]: MuJoCo's convex collision of two faces
+#: puts its points where its search lands (some inside the face), a sphere on a face touches it at one point.
+CORNER_SPHERE = 1e-4
+
+
+@dataclass(frozen=True)
+class _Corner:
+    body: int  # the body carrying the sphere
+    other: int  # the body (or base, -1) whose faces it touches
+    name: str
+    pos: np.ndarray  # centre [m], arch frame: the corner moved by the radius into its body
+    joint: int
+    share: int  # spheres at this corner: 2 on a joint between blocks (one on each), 1 on the base
+
+
+def _corner_spheres(model: Model) -> list[_Corner]:
+    """A small sphere at each of the four corners of every joint's contact, on each of its blocks."""
+    from dem.core.contact import joint_width
+
+    out = []
+    for jn, j in enumerate(model.joints):
+        sides = [k for k in (j.a, j.b) if k >= 0]
+        w, z0 = joint_width(model, j), float(model.bodies[sides[0]].centroid[2])
+        n = np.array([j.normal[0], j.normal[1], 0.0])
+        for k in sides:
+            inward = -n if k == j.a else n  # the normal runs from a to b
+            for ci, p in enumerate((j.p_i, j.p_e)):
+                for zi, z in enumerate((-0.5 * w, 0.5 * w)):
+                    pos = np.array([p[0], p[1], z0 + z]) + CORNER_SPHERE * inward
+                    out.append(_Corner(k, j.b if k == j.a else j.a, f"c{jn}b{k}p{ci}{zi}", pos, jn, len(sides)))
+    return out
+
+
+def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_base: bool, h: float,
+                     spheres: list[_Corner]) -> str:
+    """``<contact>``: every joint corner's sphere paired with the faces it touches, carrying its share of
+    the corner's spring and dashpot (dem.core.contact), and the joints' body pairs excluded from MuJoCo's
+    own contacts.
 
     With impedance ``d`` MuJoCo's contact force is ``-(k r + c v) / ((1 - d) A)`` in the soft limit
     (``A`` the pair's inverse mass, ``1/m_a + 1/m_b``), so ``solref = -(k_pt, c_pt) (1 - d) A``. The friction
@@ -172,23 +213,21 @@ def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_
     base_body = "table" if driven_base else "world"
     geoms = [[f"b{i}p{k}" for k in range(len(b.pieces))] for i, b in enumerate(model.bodies)]
     base_geoms = [f"base{k}" for k in range(len(model.base.pieces))]
-    pairs, excl, seen = [], [], set()
-    for j, kp in zip(model.joints, point_stiffness(model, normal_stiffness(settings, model))):
-        key = (min(j.a, j.b), max(j.a, j.b))
-        if key in seen:
-            continue
-        seen.add(key)
-        inv_mass = sum(1.0 / model.bodies[k].mass for k in key if k >= 0)
-        k_mj, c_mj = significant(kp * (1.0 - d) * inv_mass), significant(beta * kp * (1.0 - d) * inv_mass)
+    kp = point_stiffness(model, normal_stiffness(settings, model))
+    pairs, excl = [], {}
+    for sp in spheres:
+        j = model.joints[sp.joint]
+        inv_mass = sum(1.0 / model.bodies[k].mass for k in (sp.body, sp.other) if k >= 0)
+        k_pt = kp[sp.joint] / sp.share
+        k_mj, c_mj = significant(k_pt * (1.0 - d) * inv_mass), significant(beta * k_pt * (1.0 - d) * inv_mass)
         mu = settings.mu_base if j.is_base else settings.mu_joint
-        g1 = base_geoms if key[0] < 0 else geoms[key[0]]
-        for a in g1:
-            for b in geoms[key[1]]:
-                pairs.append(f'<pair geom1="{a}" geom2="{b}" condim="{o.condim}" friction="{_f([mu, mu, 0, 0, 0])}" '
-                             f'solref="{_f([-k_mj, -c_mj])}" solreffriction="{_f([-0.0, -d / h])}" '
-                             f'solimp="{_f([d, d, 0.001, 0.5, 2])}" margin="{_f(o.margin)}"/>')
-        excl.append(f'<exclude body1="{base_body if key[0] < 0 else f"body{key[0]}"}" body2="body{key[1]}"/>')
-    return f'<contact>{"".join(pairs)}{"".join(excl)}</contact>'
+        for g in base_geoms if sp.other < 0 else geoms[sp.other]:
+            pairs.append(f'<pair geom1="{sp.name}" geom2="{g}" condim="{o.condim}" friction="{_f([mu, mu, 0, 0, 0])}" '
+                         f'solref="{_f([-k_mj, -c_mj])}" solreffriction="{_f([-0.0, -d / h])}" '
+                         f'solimp="{_f([d, d, 0.001, 0.5, 2])}" margin="{_f(o.margin)}"/>')
+        lo, hi = min(j.a, j.b), max(j.a, j.b)
+        excl[(lo, hi)] = f'<exclude body1="{base_body if lo < 0 else f"body{lo}"}" body2="body{hi}"/>'
+    return f'<contact>{"".join(pairs)}{"".join(excl.values())}</contact>'
 
 
 class MuJoCoEngine(Engine):

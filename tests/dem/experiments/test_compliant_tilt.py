@@ -63,3 +63,26 @@ def test_mujoco_in_the_plane_reads_the_statics_of_the_same_joints():
     statics = elastic_tilt(asm, kn).lam
     assert 0.005 < 1.0 - statics / c.lp_lam < 0.03
     assert c.lam == pytest.approx(statics, rel=0.01) and c.mode == "rocking"
+
+
+@pytest.mark.skipif(importlib.util.find_spec("mujoco") is None, reason="mujoco is not installed")
+def test_mujoco_at_rest_stands_where_the_statics_of_its_springs_puts_it():
+    """Sh06-Sd010 on its Table 5.1 joints settles (sagging 32 um at the crown) onto the springs' equilibrium:
+    every block within 1 um of the statics' displacement — the springs at the joints' corners, unloaded at
+    the drawn geometry."""
+    import numpy as np
+
+    from analytic.elastic_tilt import elastic_state
+    from dem.core.loads import Rest
+    from dem.core.simulate import simulate
+
+    sid = "Sh06-Sd010"
+    asm = discretise(get_specimen(sid).arch, config="glued")
+    kn = STUDY_JOINTS[sid][0]
+    st = Settings(engine="mujoco", mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, contact_law="compliant", kn=kn,
+                  damping_beta=5e-5)
+    h = simulate(from_assembly(asm, name=sid), st, Rest(), 1.5, stop_on_collapse=False, friction_work=False).history
+    moved = (h.pos[-1] - h.pos[0])[:, :2]
+    statics = elastic_state(asm, kn, 0.0)[:, :2]
+    assert np.abs(statics).max() > 25e-6
+    assert np.abs(moved - statics).max() < 1e-6
