@@ -24,6 +24,8 @@ docs/decisions/006-solver-settings.md):
   vertices to a grid of its bounding box, which moves a relieved face's contact ends and tilts
   the joint's two faces against each other; each relieved face collides instead on a thin pad
   built in its own frame, where its vertices stay exact (docs/engines.md#9-relieved-joints-in-pybullet);
+  so does every joint face on compliant joints, whose springs feel the snapping's micrometres, their
+  hulls not offset (docs/engines.md#10-compliant-joints);
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
@@ -168,6 +170,9 @@ class PyBulletEngine(Engine):
         f_block = math.sqrt(settings.mu_joint)
         f_base = settings.mu_base / f_block
         n_files = [0]
+        # compliant joints feel micrometres: their faces unoffset, on exact pads (docs/engines.md#10-compliant-joints)
+        compliant = settings.contact_law == "compliant"
+        inflate = 0.0 if compliant else settings.inflate
 
         def shape(polys, width, R, c, z_off):
             files, frames = [], []
@@ -181,15 +186,15 @@ class PyBulletEngine(Engine):
                     o = on_grid(poly.mean(axis=0))
                     Rz = np.eye(3)
                     Rz[:2, :2] = [[math.cos(ang), -math.sin(ang)], [math.sin(ang), math.cos(ang)]]
-                    m = prism(offset_polygon((poly - o) @ Rz[:2, :2], settings.inflate), width + 2 * settings.inflate)
+                    m = prism(offset_polygon((poly - o) @ Rz[:2, :2], inflate), width + 2 * inflate)
                     vb = on_grid(np.asarray(m.vertices, float))
                     frames.append(([float(x) for x in on_grid((np.array([o[0], o[1], z_off]) - c) @ R)],
                                    tuple(float(x) for x in on_grid(_rot_to_quat(R.T @ Rz), QUAT_GRID))))
                 else:
                     if settings.inflate_normal:
-                        m = prism(offset_polygon(poly, settings.inflate), width + 2 * settings.inflate)
+                        m = prism(offset_polygon(poly, inflate), width + 2 * inflate)
                     else:
-                        m = prism(poly, width, settings.inflate)
+                        m = prism(poly, width, inflate)
                     v = np.asarray(m.vertices, float).copy()
                     v[:, 2] += z_off
                     vb = on_grid((v - c) @ R)  # = R^T (v - c) row-wise, on the 1 nm grid (dem.core.engines.inputs)
@@ -219,7 +224,7 @@ class PyBulletEngine(Engine):
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
-        relieved = is_relieved(model)
+        relieved = is_relieved(model) or compliant
         for k, b in enumerate(model.bodies):
             R, I, q = principal_frame(b.inertia)  # machine-independent (dem.core.engines.inputs)
             c = on_grid(b.centroid)
