@@ -46,7 +46,7 @@ class Settings:
     friction_anchor: bool = True  # anchors static friction: no creep of blocks at rest
     sat_features: bool = True  # polyhedral contact (4 points per face) instead of a ~1 mm hull margin
 
-    inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0
+    inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0 (rigid joints only)
     inflate_normal: bool = False  # False: vertices pushed radially from the piece centroid; True: along face normals (drifts)
     contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (docs/decisions/006-solver-settings.md#contacts)
     friction_erp: float = 1.0  # friction drift correction; lower values let blocks near the friction limit creep

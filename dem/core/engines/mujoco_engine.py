@@ -33,6 +33,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from dem.core.contact import hull_offset
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
@@ -113,7 +114,7 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
     spheres = _corner_spheres(model) if compliant else []
 
     def mesh(name: str, poly, width: float, z: float, c: np.ndarray) -> None:
-        m = prism(poly, width, 0.0 if compliant else settings.inflate)  # springs unloaded at the drawn blocks
+        m = prism(poly, width, hull_offset(settings))
         v = np.asarray(m.vertices, float).copy()
         v[:, 2] += z
         assets.append(f'<mesh name="{name}" vertex="{_f(on_grid(v - c))}"/>')

@@ -39,6 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
+from dem.core.contact import hull_offset
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import QUAT_GRID, accel, on_grid, principal_frame, significant
 from dem.core.model import Model
@@ -172,7 +173,7 @@ class PyBulletEngine(Engine):
         n_files = [0]
         # compliant joints feel micrometres: their faces unoffset, on exact pads (docs/engines.md#10-compliant-joints)
         compliant = settings.contact_law == "compliant"
-        inflate = 0.0 if compliant else settings.inflate
+        inflate = hull_offset(settings)
 
         def shape(polys, width, R, c, z_off):
             files, frames = [], []
