@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from analytic.modes import joint_frames, stiffness_per_area
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
@@ -47,11 +48,6 @@ LAMBDA_STEP = 0.02
 _J = np.array([[0.0, -1.0], [1.0, 0.0]])
 
 
-def _rot(theta: float) -> np.ndarray:
-    c, s = math.cos(theta), math.sin(theta)
-    return np.array([[c, -s], [s, c]])
-
-
 @dataclass(frozen=True)
 class _Point:
     """A spring point of a joint: bodies ``a``, ``b``, position ``p`` [m], the joint's normal and tangent."""
@@ -73,13 +69,8 @@ class _Joint:
 
 def _joints(structure, kn: float, ks: float) -> list[_Joint]:
     out = []
-    bodies = structure.bodies
-    for j in structure.joints:
-        p0, p1 = (np.asarray(p, float) for p in j.contact_points)
+    for j, w, p0, p1, n0, t0 in joint_frames(structure):
         L = float(np.linalg.norm(p1 - p0))
-        w = min(bodies[k].width for k in (j.a, j.b) if k >= 0)
-        n0 = np.asarray(j.normal, float)
-        t0 = _J @ n0
         pts = [_Point(j.a, j.b, p, n0, t0) for p in (p0, p1, 0.5 * (p0 + p1))]
         out.append(_Joint((pts[0], pts[1]), pts[2], kn * w * L / 2, ks * w * L))
     return out
@@ -97,13 +88,15 @@ def _gap(e: _Point, q: np.ndarray, c: list[np.ndarray], e0: np.ndarray):
     delta = np.zeros(2)  # x_b(p) - x_a(p)
     if b >= 0:
         rb = e.p - c[b]
-        xb_rot = rb + _turned(q[3 * b + 2], rb)  # R_b r_b
-        delta += q[3 * b:3 * b + 2] + _turned(q[3 * b + 2], rb)
+        turn_b = _turned(q[3 * b + 2], rb)
+        xb_rot = rb + turn_b  # R_b r_b
+        delta += q[3 * b:3 * b + 2] + turn_b
     if a >= 0:
         ra = e.p - c[a]
-        ea = _rot(q[3 * a + 2]) @ e0
-        delta -= q[3 * a:3 * a + 2] + _turned(q[3 * a + 2], ra)
-        d = delta + ra + _turned(q[3 * a + 2], ra)  # x_b - c_a - u_a
+        turn_a = _turned(q[3 * a + 2], ra)
+        ea = e0 + _turned(q[3 * a + 2], e0)  # R_a e0
+        delta -= q[3 * a:3 * a + 2] + turn_a
+        d = delta + ra + turn_a  # x_b - c_a - u_a
     else:
         ea = e0
     g = ea @ delta
@@ -244,11 +237,8 @@ class _Path:
     """The tilt's equilibrium path of one structure on its joints."""
 
     def __init__(self, structure, kn, ks) -> None:
-        if isinstance(kn, bool) or not (isinstance(kn, (int, float)) and math.isfinite(kn) and kn > 0):
-            raise ArchdemInputError(f"normal joint stiffness kn must be positive [Pa/m], got {kn!r}")
-        if ks is not None and (isinstance(ks, bool) or not (isinstance(ks, (int, float)) and math.isfinite(ks) and ks > 0)):
-            raise ArchdemInputError(f"shear joint stiffness ks must be positive [Pa/m], got {ks!r}")
-        self.kn, self.ks = float(kn), RIGID_SHEAR * kn if ks is None else float(ks)
+        self.kn = stiffness_per_area("normal joint stiffness kn", kn)
+        self.ks = RIGID_SHEAR * self.kn if ks is None else stiffness_per_area("shear joint stiffness ks", ks)
         self.joints = _joints(structure, self.kn, self.ks)
         self.c = [np.asarray(b.centroid, float) for b in structure.bodies]
         self.m = np.array([b.mass for b in structure.bodies])

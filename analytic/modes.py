@@ -43,7 +43,8 @@ def ks_over_kn(poisson: float = POISSON) -> float:
 KS_OVER_KN = ks_over_kn()
 
 
-def _positive(name: str, v) -> float:
+def stiffness_per_area(name: str, v) -> float:
+    """``v`` as a positive joint stiffness per unit area [Pa/m], or a one-line input error naming ``name``."""
     if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
         raise ArchdemInputError(f"{name} must be a positive stiffness per unit area [Pa/m], got {v!r}")
     return float(v)
@@ -55,16 +56,21 @@ def _B(p: np.ndarray, c: np.ndarray) -> np.ndarray:
     return np.array([[1.0, 0.0, -r[1]], [0.0, 1.0, r[0]]])
 
 
-def _joint_terms(structure, kn: float, ks: float, springs: str = "ends"):
-    """Per joint: width, the spring matrix D (2x2) and the Gauss points with their weights [m]."""
+def joint_frames(structure):
+    """Per joint: ``(joint, w, p0, p1, n, t)`` — the width of the narrower body [m], the intrados and extrados
+    ends of its contact [m], its unit normal from body ``a`` to ``b`` and the tangent ``J n``."""
     bodies = structure.bodies
     for j in structure.joints:
-        p0, p1 = j.contact_points
-        L = float(np.linalg.norm(p1 - p0))
-        ws = [bodies[k].width for k in (j.a, j.b) if k >= 0]
-        w = min(ws)
+        p0, p1 = (np.asarray(p, float) for p in j.contact_points)
+        w = min(bodies[k].width for k in (j.a, j.b) if k >= 0)
         n = np.asarray(j.normal, float)
-        t = np.array([-n[1], n[0]])
+        yield j, w, p0, p1, n, np.array([-n[1], n[0]])
+
+
+def _joint_terms(structure, kn: float, ks: float, springs: str = "ends"):
+    """Per joint: width, the spring matrix D (2x2) and the Gauss points with their weights [m]."""
+    for j, w, p0, p1, n, t in joint_frames(structure):
+        L = float(np.linalg.norm(p1 - p0))
         D = kn * np.outer(n, n) + ks * np.outer(t, t)
         pts = [(p0 + x * (p1 - p0), wt * L) for x, wt in SPRINGS[springs]]
         yield j, w, D, pts
@@ -135,8 +141,8 @@ def modes(structure, kn: float, ks: float | None = None, springs: str = "ends") 
     over it (``"bed"``)."""
     from scipy.linalg import eigh
 
-    kn = _positive("normal joint stiffness kn", kn)
-    ks = KS_OVER_KN * kn if ks is None else _positive("shear joint stiffness ks", ks)
+    kn = stiffness_per_area("normal joint stiffness kn", kn)
+    ks = KS_OVER_KN * kn if ks is None else stiffness_per_area("shear joint stiffness ks", ks)
     if springs not in SPRINGS:
         raise ArchdemInputError(f"joint springs {springs!r} is not one of {', '.join(SPRINGS)}")
     K, Kg = stiffness(structure, kn, ks, springs)

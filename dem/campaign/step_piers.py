@@ -44,9 +44,9 @@ def step_piers(ctx: CampaignContext, d: Path) -> dict:
 
     spec, heights = piers_plan(ctx)
     contact = ctx.contact_of(spec)
-    eng = ({"engine": ctx.engine} if ctx.engine != "pybullet" else {}) | ctx.law_of(spec) or None  # piers of the arch's blocks
+    settings = ({"engine": ctx.engine} if ctx.engine != "pybullet" else {}) | ctx.law_of(spec) or None  # piers of the arch's blocks
     proto = {"kind": "hold", "tol": 0.005, "start": "lp"}  # the tilt test's own protocol
-    cases = {h: make_case(spec.id, spec.arch, ctx.config, NO_SLIDING_MU, NO_SLIDING_MU, protocol=proto, settings=eng,
+    cases = {h: make_case(spec.id, spec.arch, ctx.config, NO_SLIDING_MU, NO_SLIDING_MU, protocol=proto, settings=settings,
                           contact=contact, piers=_piers(spec, h)) for h in heights}
     res = run_study(list(cases.values()), DEM_CASE, studies_dir(ctx) / "piers.h5", workers=ctx.workers,
                     scheduler=ctx.scheduler, resume=True,
