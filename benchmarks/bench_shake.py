@@ -22,7 +22,7 @@ def main() -> None:
     from analytic.inputs import SinePulse
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.experiments.shake.run import ShakeProtocol, shake
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import G

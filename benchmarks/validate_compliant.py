@@ -29,7 +29,7 @@ def vibration(engines: list[str]) -> dict:
     from analytic.modes import modes
     from dem.core.model import single_block
     from dem.core.settings import Settings
-    from dem.experiments.free_vibration import free_vibration
+    from dem.experiments.modes.run import free_vibration
     from specimens.constants import G
     from specimens.frame import single_block as block_structure
 
@@ -60,9 +60,9 @@ def tilt(engines: list[str], ids: list[str], beta: float | None = None, planar: 
     from analytic.elastic_tilt import elastic_tilt
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol
-    from dem.experiments.tilt import tilt as run_tilt
-    from dem.experiments.tilt_check import check_result
+    from dem.experiments.tilt.run import TiltProtocol
+    from dem.experiments.tilt.run import tilt as run_tilt
+    from dem.experiments.tilt.check import check_result
     from specimens.blocks import discretise
     from specimens.catalogue import STUDY_JOINTS, get_specimen
     from specimens.constants import NO_SLIDING_MU
@@ -87,9 +87,9 @@ def tilt(engines: list[str], ids: list[str], beta: float | None = None, planar: 
 
 
 def shake(ids: list[str], freqs: list[float], workers: int) -> dict:
-    from dem.campaign.step_shake import _lowest_threshold
+    from dem.experiments.shake.step_shake import _lowest_threshold
     from dem.core.settings import Settings
-    from dem.experiments.domain import analytic_domains, dem_failure_domain
+    from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
     from specimens.catalogue import STUDY_JOINTS, get_specimen
 
     rows = []

@@ -72,8 +72,8 @@ def one(job: tuple[str, str, bool, str, dict, dict, float]) -> dict:
     sid, config, with_drift, engine, proto_kw, settings_kw, contact = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol, tilt
-    from dem.experiments.tilt_check import check_result, reference_lp
+    from dem.experiments.tilt.run import TiltProtocol, tilt
+    from dem.experiments.tilt.check import check_result, reference_lp
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
@@ -122,7 +122,7 @@ def sensitivity(job: tuple[str, str]) -> dict:
     sid, variant = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol, tilt
+    from dem.experiments.tilt.run import TiltProtocol, tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import NO_SLIDING_MU

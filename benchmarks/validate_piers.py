@@ -29,7 +29,7 @@ def tilt_job(job: tuple[str, float]) -> dict:
     from analytic.limit_discrete import solve_lp
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import tilt
+    from dem.experiments.tilt.run import tilt
     from specimens import Piers, discretise, get_specimen
     from specimens.constants import NO_SLIDING_MU
 
@@ -51,7 +51,7 @@ def frame_job(job: tuple[str, float, float]) -> dict:
     from analytic.rocking_block import rocking_frame_equivalent
     from dem.core.model import frame_model
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.experiments.shake.run import ShakeProtocol, shake
     from specimens.constants import NO_SLIDING_MU, G
     from specimens.frame import rocking_frame
 
@@ -71,7 +71,7 @@ def main() -> None:
     ap.add_argument("--engines", default="pybullet,mujoco")
     ap.add_argument("--workers", type=int, default=2)
     a = ap.parse_args()
-    from dem.campaign.step_piers import PIER_HEIGHTS_FULL
+    from dem.experiments.tilt.step_piers import PIER_HEIGHTS_FULL
     from specimens.processes import die_with_parent
 
     engines = a.engines.split(",")

@@ -2,12 +2,12 @@
 machine's speed reading (:func:`machine_speed`) that scales them (docs/timings.md)."""
 from __future__ import annotations
 
-from dem.campaign.context import CampaignContext
-from dem.campaign.step_lab import lab_plan
-from dem.campaign.step_map import map_plan
-from dem.campaign.step_record import record_plan
-from dem.campaign.step_shake import shake_plan
-from dem.campaign.step_tilt import tilt_frictions
+from dem.common.campaign import CampaignContext
+from dem.experiments.tilt.step_lab import lab_plan
+from dem.experiments.friction_map.step_map import map_plan
+from dem.experiments.record.step_record import record_plan
+from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.tilt.step_tilt import tilt_frictions
 
 # Core-seconds of one unit of work of each simulator step (PyBullet, 15 bodies, the defaults) on a
 # machine whose machine_speed reads REFERENCE_SPEED, from timed campaign runs (docs/timings.md#4-unit-costs)
@@ -64,7 +64,7 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     REFERENCE_SPEED (None: the reference machine's costs as they are)."""
     import os
 
-    from dem.experiments.friction_map import parse_mu_grid
+    from dem.experiments.friction_map.run import parse_mu_grid
 
     cores = max(1, ctx.workers or os.cpu_count() or 1)
     map_specs, mus, refine = map_plan(ctx)

@@ -13,18 +13,18 @@ import time
 from pathlib import Path
 from typing import Callable
 
-from dem.campaign.context import CampaignContext, write_json_atomic
+from dem.common.campaign import CampaignContext, write_json_atomic
 from dem.campaign.step_analytic import step_analytic
-from dem.campaign.step_assess import step_assess
+from dem.experiments.assessment.step_assess import step_assess
 from dem.campaign.step_catalogue import step_catalogue
-from dem.campaign.step_fragility import step_fragility
-from dem.campaign.step_lab import step_lab
-from dem.campaign.step_map import step_map
-from dem.campaign.step_modes import step_modes
-from dem.campaign.step_piers import step_piers
-from dem.campaign.step_record import step_record
-from dem.campaign.step_shake import step_shake
-from dem.campaign.step_tilt import step_tilt
+from dem.experiments.fragility.step_fragility import step_fragility
+from dem.experiments.tilt.step_lab import step_lab
+from dem.experiments.friction_map.step_map import step_map
+from dem.experiments.modes.step_modes import step_modes
+from dem.experiments.tilt.step_piers import step_piers
+from dem.experiments.record.step_record import step_record
+from dem.experiments.shake.step_shake import step_shake
+from dem.experiments.tilt.step_tilt import step_tilt
 from specimens.errors import ArchdemInputError
 
 StepFunc = Callable[[CampaignContext, Path], dict]

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from dem.campaign.context import CampaignContext, pct, write_csv
+from dem.common.campaign import CampaignContext, pct, write_csv
 
 
 def step_analytic(ctx: CampaignContext, d: Path) -> dict:

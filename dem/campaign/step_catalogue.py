@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from dem.campaign.context import CampaignContext, write_csv
+from dem.common.campaign import CampaignContext, write_csv
 
 
 def step_catalogue(ctx: CampaignContext, d: Path) -> dict:

@@ -16,19 +16,19 @@ from specimens.errors import ArchdemInputError
 
 # Sub-command modules, in the order they appear in ``archdem --help``.
 _COMMANDS = [
-    "specimens_cmd",
-    "analytic_cmd",
-    "assess_cmd",
-    "calibrate_cmd",
-    "campaign_cmd",
-    "tilt_cmd",
-    "map_cmd",
-    "record_cmd",
-    "dynamics_cmd",
-    "shake_cmd",
-    "compare_cmd",
-    "fragility_cmd",
-    "modes_cmd",
+    "dem.cli.specimens_cmd",
+    "dem.cli.analytic_cmd",
+    "dem.experiments.assessment.assess_cmd",
+    "dem.experiments.tilt.calibrate_cmd",
+    "dem.campaign.campaign_cmd",
+    "dem.experiments.tilt.tilt_cmd",
+    "dem.experiments.friction_map.map_cmd",
+    "dem.experiments.record.record_cmd",
+    "dem.experiments.shake.domain_cmd",
+    "dem.experiments.shake.shake_cmd",
+    "dem.experiments.compare_engines.compare_engines_cmd",
+    "dem.experiments.fragility.fragility_cmd",
+    "dem.experiments.modes.modes_cmd",
 ]
 
 
@@ -46,7 +46,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     for name in _COMMANDS:
-        importlib.import_module(f"dem.cli.{name}").register(sub)
+        importlib.import_module(name).register(sub)
     return parser
 
 

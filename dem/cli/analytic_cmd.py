@@ -5,7 +5,7 @@ import argparse
 import math
 
 from analytic.summary import analyse
-from dem.cli.common import (
+from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
     default_of,

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import (
+from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
     default_of,

@@ -17,12 +17,12 @@ import pytest
 
 from analytic.inputs import SinePulse
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from dem.campaign.context import CampaignContext
+from dem.common.campaign import CampaignContext
 from dem.campaign.runner import STEPS, default_steps, run_campaign
-from dem.campaign.step_map import map_plan
-from dem.campaign.step_record import record_plan
-from dem.campaign.step_shake import shake_plan
-from dem.experiments.tilt_check import reference_lp
+from dem.experiments.friction_map.step_map import map_plan
+from dem.experiments.record.step_record import record_plan
+from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.tilt.check import reference_lp
 from specimens.blocks import discretise
 from specimens.catalogue import catalogue_rows, select_specimens
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
@@ -48,11 +48,11 @@ class StandIns:
 
     def __init__(self, mp: pytest.MonkeyPatch, specimens: list, ctx: CampaignContext):
         import analytic.figures_limit as figures_limit
-        import dem.experiments.domain as domain
-        import dem.experiments.friction_map as friction_map
-        import dem.experiments.shake as shake
-        import dem.experiments.thresholds as thresholds
-        import dem.studies.cases as cases
+        import dem.experiments.shake.domain as domain
+        import dem.experiments.friction_map.run as friction_map
+        import dem.experiments.shake.run as shake
+        import dem.experiments.shake.thresholds as thresholds
+        import dem.experiments.tilt.case as cases
         import specimens.catalogue as catalogue
 
         self.runs: list[tuple[str, str, float, float, object]] = []  # (id, kind, freq, pga [g], settings)
@@ -452,7 +452,7 @@ def test_shake_findings_agree_with_the_table(campaign):
 # ----------------------------------------------------------------------------- record
 def test_record_table_holds_the_stand_in_collapse_pga(campaign):
     from analytic.records import read_record
-    from dem.campaign.step_record import RECORD_FILE, _record_path
+    from dem.experiments.record.step_record import RECORD_FILE, _record_path
 
     stand = campaign["stand"]
     (r,) = _rows(campaign["out"], "record")

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from dem.campaign.context import CampaignContext
+from dem.common.campaign import CampaignContext
 from dem.campaign.runner import run_campaign
 from specimens.catalogue import select_specimens
 

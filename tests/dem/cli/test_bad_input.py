@@ -227,7 +227,7 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
 
     import numpy as np
 
-    from dem.cli.common import add_arch_arguments, arch_from_args, discretisation_kwargs
+    from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
     from specimens.blocks import discretise
     from specimens.errors import ArchdemInputError
 

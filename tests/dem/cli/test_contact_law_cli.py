@@ -4,8 +4,8 @@ import argparse
 import pytest
 
 from dem.cli import main
-from dem.cli.common import contact_law_settings
-from dem.formats.shake import load_shake
+from dem.common.options import contact_law_settings
+from dem.experiments.shake.file import load_shake
 
 
 def _ns(**kw) -> argparse.Namespace:

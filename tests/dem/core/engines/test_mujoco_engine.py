@@ -15,7 +15,7 @@ from dem.core.engines.mujoco_engine import (  # noqa: E402
 )
 from dem.core.model import from_assembly, single_block  # noqa: E402
 from dem.core.settings import Settings
-from dem.experiments.tilt import tilt  # noqa: E402
+from dem.experiments.tilt.run import tilt  # noqa: E402
 from specimens.blocks import discretise  # noqa: E402
 from specimens.catalogue import get_specimen  # noqa: E402
 from specimens.constants import NO_SLIDING_MU  # noqa: E402

@@ -1,0 +1,267 @@
+"""``archdem domain`` (failure domain) and ``archdem rock`` (one time history) of the rocking linkages."""
+from __future__ import annotations
+
+import argparse
+import math
+
+from dem.common.options import (
+    CONTACT_LAW_DESTS,
+    add_arch_arguments,
+    add_contact_law_arguments,
+    arch_from_args,
+    check_density,
+    default_of,
+    discretisation_kwargs,
+    parse_grid,
+    piers_from_args,
+    print_json,
+    resolve_contact,
+    workers_option,
+    writable_file,
+)
+from specimens.blocks import DEFAULT_DENSITY
+from specimens.catalogue import SPECIMEN_WIDTH
+from specimens.errors import ArchdemInputError
+from specimens.io import MAX_GRID_POINTS
+
+# Default grids of ``archdem domain`` (the analytic failure_domain takes its grid from the caller)
+SINE_FREQS = "1:20:0.5"  # Hz
+PULSE_DURATIONS = "0.05:1:0.05"  # s
+
+
+def _restitution(text: str) -> float | None:
+    if text == "auto":
+        return None
+    try:
+        v = float(text)
+    except ValueError:
+        raise ArchdemInputError(f"--restitution must be 'auto' or a number in [0, 1], got {text!r}") from None
+    if not 0 <= v <= 1:
+        raise ArchdemInputError(f"--restitution must be in [0, 1], got {v:g}")
+    return v
+
+
+def build_mechanism(args: argparse.Namespace):
+    """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
+    density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
+    if args.block is not None:
+        from analytic.rocking_block import RockingBlock
+
+        if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
+            raise ArchdemInputError("give either --block B H or an arch, not both")
+        if args.model not in (None, "block"):
+            raise ArchdemInputError("--block goes with --model block")
+        if args.contact is not None:
+            raise ArchdemInputError("--contact applies to the joints of an arch, not to --block")
+        if piers_from_args(args) is not None:
+            raise ArchdemInputError("--pier-* options set an arch on piers, not a --block")
+        b, h = args.block
+        width = args.width if args.width is not None else SPECIMEN_WIDTH
+        return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
+    label, arch = arch_from_args(args)
+    model = args.model or "four-bar"
+    if model == "block":
+        raise ArchdemInputError("--model block needs --block B H")
+    from dataclasses import replace
+
+    from analytic import linkage
+
+    piers = piers_from_args(args)
+    if piers is not None or args.layout == "discrete":
+        return label, _discrete_four_bar(args, arch, model, density)
+    contact = resolve_contact(args.contact, arch)
+    if model == "two-bar":
+        if contact != 1.0:
+            raise ArchdemInputError("--contact is not modelled by the two-bar linkage; use the four-bar")
+        return label, linkage.arch_two_bar(arch, density, direction=1)
+    lay = args.layout
+    if lay == "minimised":
+        return label, linkage.minimised_four_bar(arch, density, direction=1, contact=contact)
+    if lay == "oppenheim":
+        layout = linkage.oppenheim_hinges(arch)
+    else:
+        layout = linkage.parse_hinge_angles(arch, lay)
+    layout = tuple(replace(h, contact=contact) for h in layout)
+    fb = linkage.arch_four_bar(arch, layout, density, direction=1, name=f"four-bar ({lay.split(',')[0] if ',' not in lay else 'user'})")
+    if not fb.admissible:
+        raise ArchdemInputError(f"the {lay} hinge layout is not an admissible mechanism for this arch")
+    return label, fb
+
+
+def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: float):
+    """The four-bar of the discrete minimum mechanism (the only linkage of an arch on piers)."""
+    from analytic.linkage import mechanism_four_bar
+    from specimens.blocks import discretise
+
+    if model != "four-bar":
+        raise ArchdemInputError("an arch on piers rocks as the four-bar of its discrete mechanism; use --model four-bar")
+    if args.layout not in ("minimised", "discrete"):
+        raise ArchdemInputError("on piers the four-bar's hinges are those of the discrete mechanism; use --layout discrete")
+    kw = discretisation_kwargs(args, arch)
+    kw["density"] = density
+    return mechanism_four_bar(discretise(arch, **kw), direction=1)
+
+
+def _add_common(p: argparse.ArgumentParser) -> None:
+    add_arch_arguments(p)
+    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
+                   help="rectangular block of half-width B and half-height H [m]")
+    p.add_argument("--model", choices=("four-bar", "two-bar", "block"), default=None, help="linkage (default four-bar)")
+    p.add_argument("--layout", default="minimised",
+                   help="four-bar hinge layout: minimised (continuous ring) | discrete (minimum mechanism of the "
+                        "voussoirs, piers included; the only one on piers) | oppenheim | 'b1,b2,b3,b4' "
+                        "(polar angles about O, rad)")
+    p.add_argument("--input", choices=("sine", "sine0", "A", "B"), default="sine",
+                   help="phased one-cycle sine (starts at the onset), plain one-cycle sine, pulse A or B")
+    p.add_argument("--restitution", default="auto", help="'auto' (momentum balance) or an energy restitution in [0, 1]")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("--plot", default=None, metavar="FILE.png", help="write a figure (never overwrites)")
+
+
+def _run_domain(args: argparse.Namespace) -> int:
+    if args.engine == "dem":
+        try:
+            from dem.experiments.shake.domain_dem import dem_domain  # noqa: F401
+        except ImportError:
+            raise ArchdemInputError("the DEM failure domain is not available yet") from None
+        return int(dem_domain(args) or 0)
+    if args.scheduler:
+        raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
+    if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
+        raise ArchdemInputError("--contact-law, --kn, --youngs, --damping-* and --joints are the DEM's joints (--engine dem)")
+    from analytic.domain import failure_domain
+    from analytic.impact import post_impact
+
+    rest = _restitution(args.restitution)
+    pulses = args.input in ("A", "B")
+    if pulses and args.freq is not None:
+        raise ArchdemInputError("pulses A/B take --durations, not --freq")
+    if not pulses and args.durations is not None:
+        raise ArchdemInputError("sine inputs take --freq, not --durations")
+    if not (math.isfinite(args.tol) and 1e-4 <= args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in [0.0001, 0.5], got {args.tol}")
+    if not (math.isfinite(args.amax) and 1 < args.amax <= 1e3):
+        raise ArchdemInputError(f"--amax must be a ratio to the static onset in (1, 1000], got {args.amax:g}")
+    if not 2 <= args.scan <= MAX_GRID_POINTS:
+        raise ArchdemInputError(f"--scan must be 2 to {MAX_GRID_POINTS} amplitudes, got {args.scan}")
+    xs = (parse_grid(PULSE_DURATIONS if args.durations is None else args.durations, "--durations") if pulses
+          else parse_grid(SINE_FREQS if args.freq is None else args.freq))
+    if not 0.01 <= min(xs) <= max(xs) <= 100:
+        raise ArchdemInputError(f"{'--durations [s]' if pulses else '--freq [Hz]'} values must be in [0.01, 100]")
+    if args.plot:
+        writable_file(args.plot, overwrite=False)
+    label, mech = build_mechanism(args)
+    dom = failure_domain(mech, args.input, xs, a_max_ratio=args.amax, n_scan=args.scan, tol=args.tol,
+                         restitution=rest, workers=args.workers)
+    e = post_impact(mech, rest).e_applied
+    if args.plot:
+        from analytic.figures_dynamics import plot_domain
+
+        plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
+    if args.json:
+        hinges = {"hinges": mech.summary()["hinges"]} if "hinges" in mech.summary() else {}
+        print_json({"restitution": e, "omega0": dom.omega0, "phi_cr": dom.phi_cr, "lambda": dom.lam, **hinges,
+                    "points": dom.points(), "bands": dom.bands()})
+        return 0
+    unit = "Hz" if dom.axis == "frequency" else "s"
+    print(f"{label}  {mech.label}  lambda {dom.lam:.4f}  omega0 {dom.omega0:.4g} rad/s  phi_cr {dom.phi_cr:.4g} rad  "
+          f"e {e:.4f}")
+    for c in dom.columns:
+        th = ", ".join(f"{a / 9.81:.4f} g ({m})" for a, m in c.thresholds) or "none below a_max"
+        print(f"  {c.x:8.4g} {unit}: collapse from {th}")
+    if args.plot:
+        print(f"figure: {args.plot}")
+    return 0
+
+
+def _run_rock(args: argparse.Namespace) -> int:
+    from analytic.domain import make_input
+    from analytic.dynamics import simulate
+    from specimens.constants import G
+
+    rest = _restitution(args.restitution)
+    if args.record is not None:
+        from analytic.records import read_record
+
+        if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
+            raise ArchdemInputError("--scale (a positive factor) is needed with --record")
+        if args.plot:
+            writable_file(args.plot, overwrite=False)
+        motion = read_record(args.record).scaled(args.scale)
+        label, mech = build_mechanism(args)
+        what = f"record {motion.name or args.record} x {args.scale:g}"
+    else:
+        if args.amplitude is None or not (math.isfinite(args.amplitude) and 0 < args.amplitude <= 100):
+            raise ArchdemInputError(f"--amplitude (in g) must be a positive number up to 100, got {args.amplitude}")
+        pulses = args.input in ("A", "B")
+        x = args.duration if pulses else args.freq
+        if x is None:
+            raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
+        if not (math.isfinite(x) and 0.01 <= x <= 100):
+            raise ArchdemInputError(f"{'--duration [s]' if pulses else '--freq [Hz]'} must be in [0.01, 100], got {x:g}")
+        if args.plot:
+            writable_file(args.plot, overwrite=False)
+        label, mech = build_mechanism(args)
+        a = args.amplitude * G
+        if args.input == "sine" and a < abs(mech.onset):
+            raise ArchdemInputError(f"the phased sine needs amplitude >= onset lambda = {mech.lam:.4f} g")
+        motion = make_input(args.input, a, x, abs(mech.onset))
+        what = f"{args.input} {x:g} {'s' if pulses else 'Hz'}, {args.amplitude:g} g"
+    r = simulate(mech, motion, restitution=rest, record=True)
+    if args.plot:
+        from analytic.figures_dynamics import plot_response
+
+        plot_response(r, args.plot, title=f"{label}: {what}", input_end=motion.duration)
+    out = {"model": mech.summary(), "input": motion.describe(), **r.summary()}
+    if args.json:
+        print_json(out)
+        return 0
+    print(f"{label}  {mech.label}  lambda {mech.lam:.4f}  phi_cr {mech.phi_cr:.4g} rad")
+    print(f"{'COLLAPSE' if r.collapsed else 'survival'} ({r.rule}{', ' + r.mode if r.mode else ''})  "
+          f"max phi/phi_cr {r.max_ratio:.4f}  impacts {r.n_impacts}"
+          + (f"  t_collapse {r.t_collapse:.4f} s" if r.t_collapse is not None else ""))
+    return 0
+
+
+def register(sub) -> None:
+    from analytic.domain import failure_domain
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
+    from dem.experiments.shake.domain import dem_failure_domain
+    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+
+    p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
+                       description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
+                                   "duration (pulses), all collapse/survival bands.")
+    _add_common(p)
+    p.add_argument("--freq", default=None, help=f"frequencies [Hz]: '0.5,1,2' or 'start:stop:step', at most {MAX_GRID_POINTS} (default "
+                   f"{SINE_FREQS}; --engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})")
+    p.add_argument("--durations", default=None, help=f"pulse durations t_i [s] (default {PULSE_DURATIONS})")
+    p.add_argument("--amax", type=float, default=default_of(failure_domain, "a_max_ratio"),
+                   help=f"top of the amplitude scan / (lambda g) (default {default_of(failure_domain, 'a_max_ratio'):g}; "
+                        f"--engine dem {default_of(dem_failure_domain, 'a_max_ratio'):g})")
+    p.add_argument("--scan", type=int, default=default_of(failure_domain, "n_scan"),
+                   help=f"amplitudes in the scan (default {default_of(failure_domain, 'n_scan')})")
+    p.add_argument("--tol", type=float, default=default_of(failure_domain, "tol"),
+                   help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
+    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
+    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (with --engine dem)")
+    p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
+                   help="DEM: discrete configuration")
+    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None,
+                   help=f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=None,
+                   help=f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})")
+    add_contact_law_arguments(p)
+    p.set_defaults(func=_run_domain)
+
+    q = sub.add_parser("rock", help="one time history of a rocking linkage",
+                       description="One time history: rotation / phi_cr against time, impacts, collapse rule.")
+    _add_common(q)
+    q.add_argument("--freq", type=float, default=None, help="sine frequency [Hz]")
+    q.add_argument("--duration", type=float, default=None, help="pulse duration t_i [s] (pulses A/B)")
+    q.add_argument("--amplitude", type=float, default=None, help="amplitude [g]")
+    q.add_argument("--record", default=None, metavar="FILE",
+                   help="recorded accelerogram (AT2, SMC, ESM, CSV) instead of --input")
+    q.add_argument("--scale", type=float, default=None, help="factor applied to the record")
+    q.set_defaults(func=_run_rock)
