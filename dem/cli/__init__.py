@@ -1,7 +1,7 @@
 """The ``archdem`` command-line program.
 
-Each sub-command lives in its own module of this package and exposes
-``register(subparsers)``; the module adds its parser and sets ``func`` (a
+Each sub-command lives in a module named after it, beside its experiment (``dem/experiments/NAME/``)
+or here for the commands that are no experiment, and exposes ``register(subparsers)``; the module adds its parser and sets ``func`` (a
 callable taking the parsed namespace and returning an exit code).
 Bad input raises :class:`specimens.errors.ArchdemInputError`, which becomes one
 line on stderr and exit code 2.
@@ -9,26 +9,37 @@ line on stderr and exit code 2.
 from __future__ import annotations
 
 import argparse
-import importlib
 import sys
 
+from dem.campaign import campaign_cmd
+from dem.cli import analytic_cmd, rock_cmd, specimens_cmd
+from dem.experiments.assessment import assess_cmd
+from dem.experiments.compare_engines import compare_engines_cmd
+from dem.experiments.fragility import fragility_cmd
+from dem.experiments.friction_map import map_cmd
+from dem.experiments.modes import modes_cmd
+from dem.experiments.record import record_cmd
+from dem.experiments.shake import domain_cmd, shake_cmd
+from dem.experiments.tilt import calibrate_cmd, tilt_cmd
 from specimens.errors import ArchdemInputError
 
-# Sub-command modules, in the order they appear in ``archdem --help``.
+# The sub-command modules, in the order they appear in ``archdem --help``; each lives with its
+# experiment (docs/architecture.md).
 _COMMANDS = [
-    "dem.cli.specimens_cmd",
-    "dem.cli.analytic_cmd",
-    "dem.experiments.assessment.assess_cmd",
-    "dem.experiments.tilt.calibrate_cmd",
-    "dem.campaign.campaign_cmd",
-    "dem.experiments.tilt.tilt_cmd",
-    "dem.experiments.friction_map.map_cmd",
-    "dem.experiments.record.record_cmd",
-    "dem.experiments.shake.domain_cmd",
-    "dem.experiments.shake.shake_cmd",
-    "dem.experiments.compare_engines.compare_engines_cmd",
-    "dem.experiments.fragility.fragility_cmd",
-    "dem.experiments.modes.modes_cmd",
+    specimens_cmd,
+    analytic_cmd,
+    assess_cmd,
+    calibrate_cmd,
+    campaign_cmd,
+    tilt_cmd,
+    map_cmd,
+    record_cmd,
+    domain_cmd,
+    rock_cmd,
+    shake_cmd,
+    compare_engines_cmd,
+    fragility_cmd,
+    modes_cmd,
 ]
 
 
@@ -45,8 +56,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    for name in _COMMANDS:
-        importlib.import_module(name).register(sub)
+    for command in _COMMANDS:
+        command.register(sub)
     return parser
 
 

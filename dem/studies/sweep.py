@@ -1,10 +1,11 @@
 """Sweep engine: run a study (a list of independent cases) on local cores or a Dask cluster.
 
 A **study** is a list of cases — JSON-serialisable dicts of parameters — and a **case
-function** named by an importable ``"module:function"`` string (so that it reaches worker
-processes and Dask workers by name, not by pickling code). The function takes the case
-dict and returns a dict of results: numbers, booleans, strings, ``None``, numpy arrays or
-lists, and nested dicts of those.
+function**, imported by its caller: a module-level function, so that it reaches worker
+processes and Dask workers by reference (its module and name), not by pickling code; the study
+file records it as ``"module:function"``. The function takes the case dict and returns a dict
+of results: numbers, booleans, strings, ``None``, numpy arrays or lists, and nested dicts of
+those.
 
 Execution (:func:`run_study`): a local ``ProcessPoolExecutor`` (``spawn`` start method, all
 cores by default) or, with ``scheduler="tcp://HOST:PORT"``, a ``dask.distributed.Client``;
@@ -49,7 +50,6 @@ from __future__ import annotations
 import contextlib
 import datetime as _dt
 import hashlib
-import importlib
 import json
 import math
 import os
@@ -59,7 +59,7 @@ import time
 import traceback
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterator, Sequence
+from typing import Any, Callable, Iterator, Sequence
 
 import numpy as np
 
@@ -89,26 +89,21 @@ def case_key(case: dict) -> str:
     return hashlib.sha256(canonical_json(case).encode()).hexdigest()[:16]
 
 
-def resolve_function(spec: str):
-    """The callable named by ``"module:function"``."""
-    if not isinstance(spec, str) or spec.count(":") != 1:
-        raise ArchdemInputError(f"case function must be given as 'module:function', got {spec!r}")
-    mod, name = spec.split(":")
-    try:
-        fn = getattr(importlib.import_module(mod), name)
-    except (ImportError, AttributeError) as exc:
-        raise ArchdemInputError(f"cannot import case function {spec!r}: {exc}") from None
-    if not callable(fn):
-        raise ArchdemInputError(f"case function {spec!r} is not callable")
-    return fn
+def function_name(func: Callable[[dict], dict]) -> str:
+    """``"module:function"`` of a case function, as the study file records it; a function that
+    worker processes cannot import by that name (a lambda, a nested function) is refused."""
+    mod, name = getattr(func, "__module__", None), getattr(func, "__qualname__", "")
+    if not callable(func) or not mod or "." in name or "<" in name or getattr(sys.modules.get(mod), name, None) is not func:
+        raise ArchdemInputError(f"a case function must be a module-level function, got {func!r}")
+    return f"{mod}:{name}"
 
 
-def _run_case(func: str, case: dict) -> dict:
+def _run_case(func: Callable[[dict], dict], case: dict) -> dict:
     """Worker side: run one case, catching its exceptions (not KeyboardInterrupt/SystemExit)."""
     t0 = time.perf_counter()
     worker = f"{socket.gethostname()}:{os.getpid()}"
     try:
-        results = resolve_function(func)(case)
+        results = func(case)
         if not isinstance(results, dict):
             raise TypeError(f"case function returned {type(results).__name__}, not a dict")
         return {"status": "ok", "results": results, "error": "", "wall": time.perf_counter() - t0, "worker": worker}
@@ -304,7 +299,7 @@ def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> 
     return StudyResult(path, attrs, records)
 
 
-def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
+def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
     """Create the study file, or check it for resuming; return the keys stored with status ok."""
     import h5py
 
@@ -323,7 +318,7 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
         except OSError as exc:
             reason = str(exc).split("(")[0].strip() or type(exc).__name__  # HDF5's details span several lines
             raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({reason})") from None
-        for what, old, new in (("case function", have[0], func), ("study parameters", have[1], params_json),
+        for what, old, new in (("case function", have[0], func_name), ("study parameters", have[1], params_json),
                                ("seed", have[2], seed_json)):
             if old != new:
                 raise ArchdemInputError(f"{path} holds a study with another {what} ({old} vs {new}); not resuming it")
@@ -331,7 +326,7 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
     with atomic_path(path) as tmp:
         with h5py.File(tmp, "w") as f:
             f.attrs["archdem_study"] = LAYOUT_VERSION
-            f.attrs["case_function"] = func
+            f.attrs["case_function"] = func_name
             f.attrs["study_attrs"] = params_json
             f.attrs["seed"] = seed_json
             f.attrs["versions"] = canonical_json(_versions())
@@ -455,7 +450,7 @@ def _crash_error(exc: BaseException) -> str | None:
 
 
 # ----------------------------------------------------------------------------- run
-def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, workers: int | None = None,
+def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str | os.PathLike, workers: int | None = None,
               scheduler: str | None = None, resume: bool = False, progress: bool = True,
               study_attrs: dict | None = None, seed: int | None = None) -> StudyResult:
     """Run every case of a study and store each result in ``out_path`` as it finishes.
@@ -472,7 +467,7 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
     path = Path(out_path)
     cases = list(cases)
     study_attrs = dict(study_attrs or {})
-    resolve_function(func)  # fail early, in the main process, on a bad name
+    func_name = function_name(func)  # fail early, in the main process
     keys = [case_key(c) for c in cases]
     if len(set(keys)) != len(keys):
         dup = next(c for c, k in zip(cases, keys) if keys.count(k) > 1)
@@ -485,7 +480,7 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
         raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
     writable_dir(path.parent)
     with exclusive(lock_path(path), f"the study file {path}", remove=True):
-        done = _open_study(path, func, study_attrs, seed, resume)
+        done = _open_study(path, func_name, study_attrs, seed, resume)
         todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
         if todo:
             _execute(todo, func, path, workers, scheduler, progress)

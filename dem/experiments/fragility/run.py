@@ -26,7 +26,6 @@ import numpy as np
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
-FRAGILITY_CASE = "dem.experiments.fragility.run:shake_case"
 STUDY_KIND = "fragility"
 #: Most realisations per stripe and most runs per study (a typo, not a study, beyond them).
 MAX_REALISATIONS, MAX_RUNS = 10_000, 200_000
@@ -166,6 +165,10 @@ def shake_case(case: dict) -> dict:
             "peak_displacement": float(np.max(r.sim.history.dmax)) if len(r.sim.history.dmax) else 0.0,
             "t_collapse": float(r.t_collapse) if r.collapsed else None, "mu_joint": settings.mu_joint,
             "mu_base": settings.mu_base, "wall_s": time.perf_counter() - t0}
+
+
+#: The case function of the fragility studies.
+FRAGILITY_CASE = shake_case
 
 
 # ------------------------------------------------------------------------------------------ study

@@ -47,7 +47,7 @@ import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Mapping, Sequence
+from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -352,7 +352,7 @@ def _point(rec, kind: str) -> MapPoint:
 def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str = "0.3:1.5:0.1",
                   mu_base: float = REFERENCE_MU_BASE, out_path: str | os.PathLike = "runs/map/map.h5", workers: int | None = None,
                   scheduler: str | None = None, resume: bool = False, progress: bool = True, refine: int = 3,
-                  protocol: dict | None = None, settings: dict | None = None, func: str = DEM_CASE,
+                  protocol: dict | None = None, settings: dict | None = None, func: Callable[[dict], dict] = DEM_CASE,
                   n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
                   contact: float | Mapping[str, float] = 1.0, piers=None,
                   law: Mapping[str, dict] | None = None) -> MapResult:

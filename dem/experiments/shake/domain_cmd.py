@@ -1,4 +1,5 @@
-"""``archdem domain`` (failure domain) and ``archdem rock`` (one time history) of the rocking linkages."""
+"""``archdem domain``: the failure domain of a rocking linkage (analytic), or of the DEM arch over sine
+frequencies (``--engine dem``) plotted over the four-bar and two-bar domains of the same specimen."""
 from __future__ import annotations
 
 import argparse
@@ -10,6 +11,7 @@ from dem.common.options import (
     add_contact_law_arguments,
     arch_from_args,
     check_density,
+    contact_law_settings,
     default_of,
     discretisation_kwargs,
     parse_grid,
@@ -19,6 +21,7 @@ from dem.common.options import (
     workers_option,
     writable_file,
 )
+from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from specimens.blocks import DEFAULT_DENSITY
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
@@ -29,7 +32,8 @@ SINE_FREQS = "1:20:0.5"  # Hz
 PULSE_DURATIONS = "0.05:1:0.05"  # s
 
 
-def _restitution(text: str) -> float | None:
+def restitution_option(text: str) -> float | None:
+    """``--restitution``: ``auto`` (None: momentum balance) or an energy restitution in [0, 1]."""
     if text == "auto":
         return None
     try:
@@ -102,7 +106,8 @@ def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: floa
     return mechanism_four_bar(discretise(arch, **kw), direction=1)
 
 
-def _add_common(p: argparse.ArgumentParser) -> None:
+def add_linkage_arguments(p: argparse.ArgumentParser) -> None:
+    """The options ``domain`` and ``rock`` share: the arch or block, the linkage, its input."""
     add_arch_arguments(p)
     p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
                    help="rectangular block of half-width B and half-height H [m]")
@@ -120,10 +125,6 @@ def _add_common(p: argparse.ArgumentParser) -> None:
 
 def _run_domain(args: argparse.Namespace) -> int:
     if args.engine == "dem":
-        try:
-            from dem.experiments.shake.domain_dem import dem_domain  # noqa: F401
-        except ImportError:
-            raise ArchdemInputError("the DEM failure domain is not available yet") from None
         return int(dem_domain(args) or 0)
     if args.scheduler:
         raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
@@ -132,7 +133,7 @@ def _run_domain(args: argparse.Namespace) -> int:
     from analytic.domain import failure_domain
     from analytic.impact import post_impact
 
-    rest = _restitution(args.restitution)
+    rest = restitution_option(args.restitution)
     pulses = args.input in ("A", "B")
     if pulses and args.freq is not None:
         raise ArchdemInputError("pulses A/B take --durations, not --freq")
@@ -174,65 +175,15 @@ def _run_domain(args: argparse.Namespace) -> int:
     return 0
 
 
-def _run_rock(args: argparse.Namespace) -> int:
-    from analytic.domain import make_input
-    from analytic.dynamics import simulate
-    from specimens.constants import G
-
-    rest = _restitution(args.restitution)
-    if args.record is not None:
-        from analytic.records import read_record
-
-        if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
-            raise ArchdemInputError("--scale (a positive factor) is needed with --record")
-        if args.plot:
-            writable_file(args.plot, overwrite=False)
-        motion = read_record(args.record).scaled(args.scale)
-        label, mech = build_mechanism(args)
-        what = f"record {motion.name or args.record} x {args.scale:g}"
-    else:
-        if args.amplitude is None or not (math.isfinite(args.amplitude) and 0 < args.amplitude <= 100):
-            raise ArchdemInputError(f"--amplitude (in g) must be a positive number up to 100, got {args.amplitude}")
-        pulses = args.input in ("A", "B")
-        x = args.duration if pulses else args.freq
-        if x is None:
-            raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
-        if not (math.isfinite(x) and 0.01 <= x <= 100):
-            raise ArchdemInputError(f"{'--duration [s]' if pulses else '--freq [Hz]'} must be in [0.01, 100], got {x:g}")
-        if args.plot:
-            writable_file(args.plot, overwrite=False)
-        label, mech = build_mechanism(args)
-        a = args.amplitude * G
-        if args.input == "sine" and a < abs(mech.onset):
-            raise ArchdemInputError(f"the phased sine needs amplitude >= onset lambda = {mech.lam:.4f} g")
-        motion = make_input(args.input, a, x, abs(mech.onset))
-        what = f"{args.input} {x:g} {'s' if pulses else 'Hz'}, {args.amplitude:g} g"
-    r = simulate(mech, motion, restitution=rest, record=True)
-    if args.plot:
-        from analytic.figures_dynamics import plot_response
-
-        plot_response(r, args.plot, title=f"{label}: {what}", input_end=motion.duration)
-    out = {"model": mech.summary(), "input": motion.describe(), **r.summary()}
-    if args.json:
-        print_json(out)
-        return 0
-    print(f"{label}  {mech.label}  lambda {mech.lam:.4f}  phi_cr {mech.phi_cr:.4g} rad")
-    print(f"{'COLLAPSE' if r.collapsed else 'survival'} ({r.rule}{', ' + r.mode if r.mode else ''})  "
-          f"max phi/phi_cr {r.max_ratio:.4f}  impacts {r.n_impacts}"
-          + (f"  t_collapse {r.t_collapse:.4f} s" if r.t_collapse is not None else ""))
-    return 0
-
-
 def register(sub) -> None:
     from analytic.domain import failure_domain
     from dem.experiments.shake.step_shake import SHAKE_FREQS
-    from dem.experiments.shake.domain import dem_failure_domain
     from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
                        description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
                                    "duration (pulses), all collapse/survival bands.")
-    _add_common(p)
+    add_linkage_arguments(p)
     p.add_argument("--freq", default=None, help=f"frequencies [Hz]: '0.5,1,2' or 'start:stop:step', at most {MAX_GRID_POINTS} (default "
                    f"{SINE_FREQS}; --engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})")
     p.add_argument("--durations", default=None, help=f"pulse durations t_i [s] (default {PULSE_DURATIONS})")
@@ -255,13 +206,50 @@ def register(sub) -> None:
     add_contact_law_arguments(p)
     p.set_defaults(func=_run_domain)
 
-    q = sub.add_parser("rock", help="one time history of a rocking linkage",
-                       description="One time history: rotation / phi_cr against time, impacts, collapse rule.")
-    _add_common(q)
-    q.add_argument("--freq", type=float, default=None, help="sine frequency [Hz]")
-    q.add_argument("--duration", type=float, default=None, help="pulse duration t_i [s] (pulses A/B)")
-    q.add_argument("--amplitude", type=float, default=None, help="amplitude [g]")
-    q.add_argument("--record", default=None, metavar="FILE",
-                   help="recorded accelerogram (AT2, SMC, ESM, CSV) instead of --input")
-    q.add_argument("--scale", type=float, default=None, help="factor applied to the record")
-    q.set_defaults(func=_run_rock)
+
+def dem_domain(args: argparse.Namespace) -> int:
+    """``archdem domain ID --engine dem --freq 2,4,6,8,10 [--plot FILE] [--json]``."""
+    if getattr(args, "block", None) is not None:
+        raise ArchdemInputError("--engine dem takes an arch (id or parameters), not --block")
+    if getattr(args, "input", "sine") not in ("sine", "sine0"):
+        raise ArchdemInputError("--engine dem runs one-cycle sines only (--input sine0)")
+    if getattr(args, "durations", None) is not None:
+        raise ArchdemInputError("--engine dem takes --freq, not --durations")
+    from analytic.domain import failure_domain
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
+
+    freqs = parse_grid(args.freq) if args.freq is not None else list(SHAKE_FREQS)
+    if args.plot:
+        writable_file(args.plot, overwrite=False)
+    label, arch = arch_from_args(args)
+    law = contact_law_settings(args, getattr(args, "id", None))
+    dem_a_max = default_of(dem_failure_domain, "a_max_ratio")
+    a_max = getattr(args, "amax", dem_a_max)
+    # the analytic default (failure_domain's a_max_ratio) is too costly here: the DEM's own default instead
+    a_max = dem_a_max if a_max is None or a_max == default_of(failure_domain, "a_max_ratio") else float(a_max)
+    res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
+                             getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
+                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
+                             scheduler=getattr(args, "scheduler", None), joints=law or None)
+    if args.plot:
+        from dem.experiments.shake.figure import plot_domain_over_analytic
+
+        density = getattr(args, "density", None) or DEFAULT_DENSITY
+        contact = discretisation_kwargs(args, arch).get("contact", 1.0)
+        plot_domain_over_analytic(res, analytic_domains(arch, freqs, density, contact=contact,
+                                                        piers=piers_from_args(args)), args.plot,
+                                  title=f"{label}: DEM vs rocking linkages, one-cycle sine")
+        res["plot"] = str(args.plot)
+    if args.json:
+        print_json({k: v for k, v in res.items() if k != "thresholds"} | {"thresholds": [
+            {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")}
+            for t in res["thresholds"]]})
+        return 0
+    print(f"{label}  DEM ({res['config']}, mu {res['mu_joint']:g}/{res['mu_base']:g})  static lambda {res['lambda']:.4f}")
+    for t in res["thresholds"]:
+        a = "none up to %.3f g" % res["a_range_g"][1] if t["amplitude_g"] is None else f"{t['amplitude_g']:.4f} g"
+        above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in t["survival_bands_above"])
+        print(f"  {t['freq']:6.3g} Hz: collapse from {a}" + (f"; survives again {above}" if above else ""))
+    if args.plot:
+        print(f"figure: {args.plot}")
+    return 0

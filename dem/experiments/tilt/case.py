@@ -2,7 +2,7 @@
 tilt step), its replay with the time history, and a closed-form stand-in for tests.
 
 A case is a JSON-serialisable dict (its key identifies it in the study file); case functions are
-named ``"module:function"`` in the study (:mod:`dem.studies.sweep`).
+passed to :func:`dem.studies.sweep.run_study` as functions (``DEM_CASE``, ``SYNTHETIC_CASE``).
 """
 from __future__ import annotations
 
@@ -18,8 +18,6 @@ import numpy as np
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
-DEM_CASE = "dem.experiments.tilt.case:tilt_case"
-SYNTHETIC_CASE = "dem.experiments.tilt.case:synthetic_case"
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
 # A map tilt reads the mode of the collapsing level of a 2 % bracket started at the LP; a bracket as
@@ -198,3 +196,8 @@ def synthetic_case(case: dict) -> dict:
     rocks = mu >= ms
     return {"lambda": lr if rocks else lr * mu / ms, "mode": "rocking" if rocks else "sliding", "n_sims": 1,
             "wall_s": 0.0, "joint_names": None, "joint_states": None, "joint_faces": None}
+
+
+#: The case function of the DEM tilt studies, and its closed-form stand-in for tests.
+DEM_CASE = tilt_case
+SYNTHETIC_CASE = synthetic_case

@@ -171,7 +171,7 @@ def test_animate_frames_default_is_the_clis():
 def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     # `archdem domain --engine dem`: the analytic --amax default means the DEM's own a_max_ratio,
     # the frequencies default to the campaign's shake frequencies
-    import dem.experiments.shake.domain_dem as dd
+    import dem.experiments.shake.domain_cmd as dd
     from dem.experiments.shake.step_shake import SHAKE_FREQS
     from dem.cli import main
     from dem.experiments.shake.domain import dem_failure_domain

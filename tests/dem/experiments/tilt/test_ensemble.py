@@ -37,7 +37,7 @@ def test_every_realisation_is_a_case_with_its_seed_and_bands(tmp_path, monkeypat
     import dem.experiments.tilt.case as cases
     from specimens.blocks import discretise
 
-    monkeypatch.setattr(cases, "DEM_CASE", f"{__name__}:band_case")
+    monkeypatch.setattr(cases, "DEM_CASE", band_case)
     imp = Imperfection(0.005, 0.001)
     r = tilt_ensemble("Sh06-Sd020", ARCH, imp, 3, 42, tmp_path / "e.h5", workers=1, progress=False)
     nominal = discretise(ARCH, config="glued", contact=imp.contact(ARCH))
