@@ -20,6 +20,7 @@ _EXPORTS = {
     "Settings": "dem.core.settings",
     "SimResult": "dem.core.simulate", "simulate": "dem.core.simulate",
     "dem_failure_domain": "dem.experiments.shake.domain",
+    "assess_with_records": "dem.experiments.assessment.run",
     "catalogue_map": "dem.experiments.friction_map.run",
     "ShakeProtocol": "dem.experiments.shake.run", "ShakeResult": "dem.experiments.shake.run", "shake": "dem.experiments.shake.run",
     "ThresholdResult": "dem.experiments.shake.thresholds", "failure_domain": "dem.experiments.shake.thresholds", "static_onset": "dem.experiments.shake.thresholds", "threshold": "dem.experiments.shake.thresholds",
@@ -34,6 +35,7 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
     from dem.core.model import Model, as_model, from_assembly
     from dem.core.settings import Settings
     from dem.core.simulate import SimResult, simulate
+    from dem.experiments.assessment.run import assess_with_records
     from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.friction_map.run import catalogue_map
     from dem.experiments.shake.run import ShakeProtocol, ShakeResult, shake

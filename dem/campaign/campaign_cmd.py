@@ -5,6 +5,7 @@ import argparse
 import time
 from pathlib import Path
 
+from dem.common.joints import STUDY_JOINTS
 from dem.common.options import (
     add_contact_law_arguments,
     add_engine_argument,
@@ -41,7 +42,7 @@ def _campaign(args: argparse.Namespace) -> int:
 
         check_scheduler(args.scheduler)  # before the output folder is made
     # --joints table-5.1: each catalogue specimen its own (checked on the first: no --kn beside it, the engine)
-    joints = "table-5.1" if args.joints and contact_law_settings(args, specs[0].id) else (
+    joints = STUDY_JOINTS if args.joints and contact_law_settings(args, specs[0].id) else (
         contact_law_settings(args, None) or None)
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,

@@ -5,6 +5,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from dem.common.joints import contact_fraction, joint_law, joint_law_text
+
 
 @dataclass
 class CampaignContext:
@@ -19,40 +21,20 @@ class CampaignContext:
     scheduler: str | None = None  # a Dask scheduler address: every sweep of the campaign runs there
     log: Callable[[str], None] = print
     results: dict = field(default_factory=dict)
-    contact: float | str = 1.0  # effective contact of every joint, or "calibrated" (per specimen)
-    joints: dict | str | None = None  # None: rigid; "table-5.1": the study's per specimen; or compliant-law settings
+    contact: float | str = 1.0  # contact fraction of every joint, or "calibrated" (dem.common.joints)
+    joints: dict | str | None = None  # joint law: None rigid, "table-5.1" or compliant-law settings (dem.common.joints)
 
     def law_of(self, spec) -> dict:
         """The contact-law settings of ``spec``'s joints in every simulator step ({} = rigid)."""
-        if not self.joints:
-            return {}
-        if self.joints == "table-5.1":
-            from dem.core.contact import study_joints
-
-            return study_joints(spec.id)
-        return dict(self.joints)
+        return joint_law(self.joints, spec.id)
 
     def joints_text(self) -> str:
         """The joints of the simulator steps, in words for their summaries."""
-        if not self.joints:
-            return "Rigid joints."
-        if self.joints == "table-5.1":
-            return "Compliant joints: each specimen's k_n and beta_R of the study's Table 5.1."
-        j = self.joints
-        damping = (f"beta_R {j['damping_beta']:g} s" if j.get("damping_beta") else
-                   f"xi {j['damping_xi']:g} at omega_r" if j.get("damping_xi") else "no damping")
-        stiffness = f"k_n {j['kn']:.3g} Pa/m" if j.get("kn") else f"k_n = E / block length, E {j['youngs']:.3g} Pa"
-        return f"Compliant joints: {stiffness}, {damping}."
+        return joint_law_text(self.joints)
 
     def contact_of(self, spec) -> float:
-        """The effective contact of ``spec``'s joints in this campaign."""
-        if self.contact == "calibrated":
-            from analytic.calibration import load_calibration
-
-            return load_calibration().contact(spec.arch)
-        from specimens.blocks import check_contact
-
-        return check_contact(self.contact)
+        """The contact fraction of ``spec``'s joints in this campaign."""
+        return contact_fraction(self.contact, spec.arch)
 
 
 def write_csv(path: Path, rows: list[dict]) -> None:

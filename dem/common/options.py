@@ -8,6 +8,8 @@ import json
 import math
 from typing import Any
 
+from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
+from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
@@ -182,26 +184,15 @@ def workers_option(text: str) -> int:
 
 
 def contact_option(text: str) -> float | str:
-    """``--contact``: a fraction in (0, 1] or ``calibrated``."""
-    if text.strip().lower() == "calibrated":
-        return "calibrated"
+    """``--contact``: a fraction in (0, 1] or ``calibrated`` (resolved by :func:`dem.common.joints.contact_fraction`)."""
+    if text.strip().lower() == CALIBRATED:
+        return CALIBRATED
     try:
         return check_contact(float(text))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a fraction in (0, 1] or 'calibrated', got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"must be a fraction in (0, 1] or '{CALIBRATED}', got {text!r}") from None
     except ArchdemInputError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
-
-
-def resolve_contact(value: float | str | None, arch) -> float:
-    """The effective contact of ``arch`` for a ``--contact`` value (None: the full joint)."""
-    if value is None:
-        return 1.0
-    if value == "calibrated":
-        from analytic.calibration import load_calibration
-
-        return load_calibration().contact(arch)
-    return check_contact(value)
 
 
 def check_density(density: float) -> float:
@@ -224,7 +215,7 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
         check_density(args.density)
         kw["density"] = args.density
     if getattr(args, "contact", None) is not None:
-        kw["contact"] = resolve_contact(args.contact, arch)
+        kw["contact"] = contact_fraction(args.contact, arch)
     piers = piers_from_args(args)
     if piers is not None:
         if arch is not None:
@@ -269,8 +260,6 @@ def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[s
 
 def add_friction_arguments(p: argparse.ArgumentParser, what: str = "") -> None:
     """``--mu-joint`` and ``--mu-base`` with the settings' defaults."""
-    from dem.core.settings import Settings
-
     for name, text in (("mu_joint", "block-block"), ("mu_base", "block-base")):
         p.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, default=default_of(Settings, name),
                        help=f"{what}{text} friction (default {default_of(Settings, name):g})")
@@ -282,8 +271,6 @@ def print_json(obj: Any) -> None:
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:
     """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
-    from dem.core.settings import Settings
-
     engine = default_of(Settings, "engine")
     p.add_argument("--engine", choices=("pybullet", "mujoco"), default=engine,
                    help=f"physics engine (default {engine}; see README 'Choosing an engine')")
@@ -294,16 +281,12 @@ def parse_grid(text: str, what: str = "--freq") -> list[float]:
     return _parse_grid(text, what)
 
 
-#: ``--joints`` sets: the reference study's compliant joints of a catalogue specimen.
-JOINT_SETS = ("table-5.1",)
 #: The destinations of :func:`add_contact_law_arguments`.
 CONTACT_LAW_DESTS = ("contact_law", "kn", "youngs", "ks", "damping_beta", "damping_xi", "joints")
 
 
 def add_contact_law_arguments(p: argparse.ArgumentParser) -> None:
     """``--contact-law rigid|compliant --kn --damping-beta|--damping-xi`` and ``--joints table-5.1``."""
-    from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
-
     law = default_of(Settings, "contact_law")
     p.add_argument("--contact-law", dest="contact_law", choices=CONTACT_LAWS, default=None,
                    help=f"joints: as stiff as the engine makes them, or springs (default {law}; compliant with --kn)")
@@ -331,36 +314,23 @@ def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> d
 
 
 def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
-    from dem.core.settings import Settings
-
+    """The options' law, checked by :class:`dem.core.settings.Settings` (its checks and messages); the
+    command line adds only what is its own: --ks, --joints beside the other options, and the law
+    implied by --kn/--youngs/--damping-* without --contact-law."""
     kn, youngs, beta, xi = (getattr(args, k, None) for k in ("kn", "youngs", "damping_beta", "damping_xi"))
     law = getattr(args, "contact_law", None)
     if getattr(args, "ks", None) is not None:
         raise ArchdemInputError("--ks: the engines' joints stick rigidly until they slide; shear stiffness goes to "
                                 "archdem modes")
-    if getattr(args, "joints", None) == "table-5.1":
-        from dem.core.contact import study_joints
-
-        if kn is not None or youngs is not None or beta is not None or xi is not None or law == "rigid":
-            raise ArchdemInputError("--joints table-5.1 sets the joints: give it without --contact-law rigid, --kn or --damping-*")
-        return study_joints(specimen_id)
-    given = [n for n, v in (("--kn", kn), ("--youngs", youngs), ("--damping-beta", beta), ("--damping-xi", xi))
-             if v is not None]
+    given = {k: v for k, v in (("kn", kn), ("youngs", youngs), ("damping_beta", beta), ("damping_xi", xi))
+             if v is not None}
+    if getattr(args, "joints", None) == STUDY_JOINTS:
+        if given or law == "rigid":
+            raise ArchdemInputError(f"--joints {STUDY_JOINTS} sets the joints: give it without --contact-law rigid, "
+                                    "--kn or --damping-*")
+        return joint_law(STUDY_JOINTS, specimen_id)
     if law is None:
         law = "compliant" if given else default_of(Settings, "contact_law")
-    if law == "rigid":
-        if given:
-            raise ArchdemInputError(f"{', '.join(given)} belong to --contact-law compliant, not rigid")
-        return {}
-    if kn is None and youngs is None:
-        raise ArchdemInputError("--contact-law compliant needs --kn PA_PER_M or --youngs E_PA (or --joints table-5.1)")
-    if kn is not None and youngs is not None:
-        raise ArchdemInputError("give the joints' stiffness as --kn or as --youngs, not both")
-    for name, v in (("--kn", kn), ("--youngs", youngs), ("--damping-beta", beta), ("--damping-xi", xi)):
-        positive = name in ("--kn", "--youngs")
-        if v is not None and not (math.isfinite(v) and (v > 0 if positive else v >= 0)):
-            raise ArchdemInputError(f"{name} must be a {'positive' if positive else 'non-negative'} number, got {v}")
-    out = {"contact_law": "compliant", **({"kn": kn} if kn is not None else {"youngs": youngs}),
-           **({"damping_beta": beta} if beta is not None else {}), **({"damping_xi": xi} if xi is not None else {})}
-    Settings(**out)  # the law's own checks (xi's range)
-    return out
+    out = {"contact_law": law, **given}
+    Settings(**out)  # the law's own checks and messages
+    return {} if law == "rigid" else out

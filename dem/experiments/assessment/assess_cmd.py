@@ -75,41 +75,14 @@ def _strips(args: argparse.Namespace):
     return Strips(vals[0] * 1e6, vals[1] * 1e-3, vals[2] * 1e-3, args.frp_face, vals[3] * 1e6 if len(vals) == 4 else None)
 
 
-def _mechanism(args: argparse.Namespace, arch):
-    """The four-bar of the arch's governing mechanism (on piers: the discrete one through them)."""
-    from analytic.linkage import governing_four_bar
-    from specimens.blocks import DEFAULT_DENSITY
-
-    kw = discretisation_kwargs(args, arch)
-    return governing_four_bar(arch, kw.pop("density", DEFAULT_DENSITY), kw.pop("contact", 1.0), kw.pop("piers", None),
-                              **kw)
-
-
-def _records(args: argparse.Namespace, site, res, arch) -> dict:
-    """The virtual check: the records matched to the site over the period range, shaken on the DEM."""
-    import os
-
-    from analytic.matching import match_record
-    from analytic.records import baseline_correct, read_record
-    from dem.core.settings import Settings
-    from dem.experiments.record.run import dem_verdict, run_records
-    from specimens.blocks import discretise
-
-    chk = next(c for c in res.checks if c["kind"] == "non-linear")
-    if args.match_periods is not None:
-        rng = parse_grid(args.match_periods, "--match-periods")
-        if len(rng) != 2:
-            raise ArchdemInputError(f"--match-periods takes LO,HI in s, got {args.match_periods!r}")
-        lo, hi = rng
-    else:
-        lo, hi = 0.2 * chk["period"], min(2.0 * chk["period"], site.t_max)
-    matched = [match_record(baseline_correct(read_record(p)), site, (lo, hi)) for p in args.records]
-    runs = run_records(discretise(arch, **discretisation_kwargs(args, arch)), [m.motion for m in matched],
-                       res.curve.e_star, Settings(engine=args.engine),
-                       workers=args.workers or min(len(matched), os.cpu_count() or 1))
-    return {"period_range": [lo, hi], "matched": [m.describe() for m in matched], "runs": [r.describe() for r in runs],
-            "verdict": dem_verdict(runs, res.curve.d0_star, chk["d_u_star"]), "engine": args.engine,
-            "dem_note": "the DEM shakes the unreinforced structure (strips are not modelled)"}
+def _period_range(args: argparse.Namespace) -> tuple[float, float] | None:
+    """``--match-periods LO,HI`` [s], or None (the library's default range)."""
+    if args.match_periods is None:
+        return None
+    rng = parse_grid(args.match_periods, "--match-periods")
+    if len(rng) != 2:
+        raise ArchdemInputError(f"--match-periods takes LO,HI in s, got {args.match_periods!r}")
+    return rng[0], rng[1]
 
 
 def _run_monument(args: argparse.Namespace, monument) -> int:
@@ -166,6 +139,8 @@ def _print(title: str, hinges: list[dict], res) -> None:
 
 def _run(args: argparse.Namespace) -> int:
     from analytic.assessment import assess
+    from dem.core.settings import Settings
+    from dem.experiments.assessment.run import assess_with_records
     from specimens.io import writable_file
     from specimens.monuments import MONUMENTS
 
@@ -181,8 +156,10 @@ def _run(args: argparse.Namespace) -> int:
         writable_file(args.report, overwrite=False)
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
-    mech = _mechanism(args, arch)
-    res = assess(mech, site, args.FC, args.q, args.limit_state, height)
+    a = assess_with_records(arch, args.records or (), site, FC=args.FC, q=args.q, limit_state=args.limit_state,
+                            height=height, period_range=_period_range(args), settings=Settings(engine=args.engine),
+                            workers=args.workers, **discretisation_kwargs(args, arch))
+    mech, res = a.mechanism, a.assessment
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),
            "mechanism": mech.summary(), **res.describe()}
     frp = None
@@ -196,8 +173,8 @@ def _run(args: argparse.Namespace) -> int:
                      extra_force=sc.strip_force)
         out["frp"] = {"strips": strips.describe(), "lambda": sc.lam, "mechanism": sc.mechanism.summary(),
                       "hinges": sc.mechanism.summary()["hinges"], **frp.describe()}
-    if args.records:
-        out["records"] = _records(args, site, res, arch)
+    if a.records is not None:
+        out["records"] = a.records.describe()
     if args.report is not None:
         from dem.experiments.assessment.figure import write_report
 

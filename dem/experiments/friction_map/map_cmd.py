@@ -5,6 +5,7 @@ import argparse
 import math
 import sys
 
+from dem.common.joints import contact_fraction
 from dem.common.options import (
     add_contact_law_arguments,
     add_engine_argument,
@@ -14,7 +15,6 @@ from dem.common.options import (
     default_of,
     piers_from_args,
     print_json,
-    resolve_contact,
     study_path,
     workers_option,
     writable_dir,
@@ -72,7 +72,7 @@ def _run(args: argparse.Namespace) -> int:
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
                             settings=settings or None,
-                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs}, piers=piers)
+                            contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers)
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2

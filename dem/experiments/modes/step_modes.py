@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from dem.common.joints import STUDY_JOINTS
 from dem.common.campaign import CampaignContext, write_csv
 
 #: Frequencies listed per specimen in the table (all 3 per body are in the CSV's JSON column).
@@ -44,7 +45,7 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
     return {
         "summary": f"Natural frequencies of the {ctx.config} blocks on compliant joints at rest under gravity (springs at "
                    "the joints' ends, k_s = 0.347 k_n; k_n "
-                   + ("of the campaign's joints)." if ctx.joints and ctx.joints != "table-5.1" else "of the study's Table 5.1)."),
+                   + ("of the campaign's joints)." if ctx.joints and ctx.joints != STUDY_JOINTS else "of the study's Table 5.1)."),
         "tables": [{"name": "modes", "title": "Natural frequencies [Hz]", "csv": "modes/modes.csv"}],
         "figures": figures,
         "findings": [f"First natural frequency {lo:.1f}-{hi:.1f} Hz over {len(rows)} specimens: far above the "

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from dem.common.joints import contact_fraction
 from dem.common.options import (
     CONTACT_LAW_DESTS,
     add_arch_arguments,
@@ -17,7 +18,6 @@ from dem.common.options import (
     parse_grid,
     piers_from_args,
     print_json,
-    resolve_contact,
     workers_option,
     writable_file,
 )
@@ -73,7 +73,7 @@ def build_mechanism(args: argparse.Namespace):
     piers = piers_from_args(args)
     if piers is not None or args.layout == "discrete":
         return label, _discrete_four_bar(args, arch, model, density)
-    contact = resolve_contact(args.contact, arch)
+    contact = contact_fraction(args.contact, arch)
     if model == "two-bar":
         if contact != 1.0:
             raise ArchdemInputError("--contact is not modelled by the two-bar linkage; use the four-bar")

@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from dem.common.joints import ensemble_imperfection
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,
@@ -15,7 +16,6 @@ from dem.common.options import (
     discretisation_kwargs,
     figure_file,
     print_json,
-    resolve_contact,
     workers_option,
     writable_dir,
 )
@@ -74,7 +74,6 @@ def _run(args: argparse.Namespace) -> int:
 def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
     """``archdem tilt ID --ensemble N --seed S [--contact C|calibrated] [--scatter MM]``."""
     from dem.experiments.tilt.ensemble import tilt_ensemble
-    from specimens.imperfection import Imperfection
     from specimens.io import unique_run_path
 
     if args.protocol != "hold" or args.start != "auto" or args.full_hold or args.planar or args.dt is not None:
@@ -83,18 +82,10 @@ def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
         raise ArchdemInputError("an ensemble uses the default density: drop --density")
     if args.seed is None:
         raise ArchdemInputError("--ensemble needs --seed S (every realisation is reproducible from it)")
-    contact = resolve_contact(args.contact, arch)
-    scatter_mm = args.scatter
-    if scatter_mm is None and args.contact == "calibrated":
-        from analytic.calibration import load_calibration
-
-        scatter_mm = load_calibration().edge_loss_sd * 1e3
-    if scatter_mm is None:
-        raise ArchdemInputError("--ensemble needs the scatter of the joints' edge losses: --scatter MM, "
-                                "or --contact calibrated (the calibrated scatter)")
-    if not (math.isfinite(scatter_mm) and 0 <= scatter_mm <= 1e3 * arch.t / 2):
-        raise ArchdemInputError(f"--scatter must be between 0 and half the ring thickness [mm], got {scatter_mm:g}")
-    imp = Imperfection(edge_loss=(1.0 - contact) * arch.t / 2, edge_loss_sd=scatter_mm / 1e3)
+    if args.scatter is not None and not (math.isfinite(args.scatter) and 0 <= args.scatter <= 1e3 * arch.t / 2):
+        raise ArchdemInputError(f"--scatter must be between 0 and half the ring thickness [mm], got {args.scatter:g}")
+    imp = ensemble_imperfection(args.contact, arch, None if args.scatter is None else args.scatter / 1e3)
+    scatter_mm = imp.edge_loss_sd * 1e3
     out = writable_dir(args.out)
     path = unique_run_path(out, f"ensemble-{label}-{args.config}-seed{args.seed}")
     res = tilt_ensemble(label, arch, imp, args.ensemble, args.seed, path, config=args.config, mu_joint=args.mu_joint,
