@@ -19,7 +19,7 @@ from dem.experiments.fragility import fragility_cmd
 from dem.experiments.friction_map import map_cmd
 from dem.experiments.modes import modes_cmd
 from dem.experiments.record import record_cmd
-from dem.experiments.shake import domain_cmd, shake_cmd
+from dem.experiments.shake import animate_cmd, domain_cmd, shake_cmd, threshold_cmd
 from dem.experiments.tilt import calibrate_cmd, tilt_cmd
 from specimens.errors import ArchdemInputError
 
@@ -37,6 +37,8 @@ _COMMANDS = [
     domain_cmd,
     rock_cmd,
     shake_cmd,
+    threshold_cmd,
+    animate_cmd,
     compare_engines_cmd,
     fragility_cmd,
     modes_cmd,
