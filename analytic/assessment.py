@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
+from analytic.frp import strengthened_collapse
 from analytic.kinematic import (
     CONFIDENCE_FACTORS,
     Q_MASONRY,
@@ -14,6 +15,7 @@ from analytic.kinematic import (
     capacity_curve,
     linear_kinematic,
 )
+from analytic.spectra import ec8
 from specimens.errors import ArchdemInputError
 
 
@@ -67,8 +69,6 @@ NOH_GUMBAD_FRP = (1964e6, 0.047e-3, 0.680)
 
 def monument_site():
     """The Noh Gumbad hazard as an EN 1998-1 type 1 spectrum on rock (ground A, S = 1): PGA 3.67 m/s^2."""
-    from analytic.spectra import ec8
-
     return ec8(NOH_GUMBAD_PGA, "A", 1)
 
 
@@ -77,8 +77,6 @@ def assess_monument(monument, site, strips=None, FC: float = CONFIDENCE_FACTORS[
     """Every configuration of ``monument`` (:mod:`specimens.monuments`), unreinforced and with
     ``strips``: the least mechanism of the fine cut (:func:`analytic.frp.strengthened_collapse`) and its
     assessment against ``site``; one row each."""
-    from analytic.frp import strengthened_collapse
-
     rows = []
     for name, piers in monument.configurations.items():
         for s in (None, strips) if strips is not None else (None,):

@@ -19,14 +19,19 @@ For comparison the same is done for one contact *fraction* common to all specime
 from __future__ import annotations
 
 import csv
+import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
+from specimens.blocks import discretise
+from specimens.catalogue import CATALOGUE, SPECIMEN_WIDTH
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.imperfection import Imperfection
 
 #: The laboratory table shipped with archdem (six specimens of the catalogue).
 LAB_TILT_TESTS = Path(__file__).resolve().parents[1] / "specimens" / "data" / "laboratory_tilt_tests.csv"
@@ -58,8 +63,6 @@ def read_experiments(path: str | Path) -> list[TiltTest]:
     """The laboratory table ``path`` (CSV, ``#`` comment lines): columns ``id``, ``lambda_mean``,
     ``lambda_sd``, ``observed_mode`` (first word rocking / sliding), optional ``n_tests``; ids of
     the catalogue, or any id with ``Ri_mm``, ``Re_mm``, ``e_mm``."""
-    from specimens.catalogue import CATALOGUE, SPECIMEN_WIDTH
-
     p = Path(path)
     try:
         lines = [ln for ln in p.read_text().splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
@@ -105,9 +108,8 @@ def read_experiments(path: str | Path) -> list[TiltTest]:
 
 def lp_lambda(arch: PointedArch, contact: float, bands=None) -> float:
     """Static LP multiplier of the glued blocks at the reference friction, at ``contact``."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
-    from specimens.blocks import discretise
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     return float(solve_lp(discretise(arch, config="glued", contact=contact, bands=bands),
                           REFERENCE_MU_JOINT, REFERENCE_MU_BASE).lam)
@@ -119,6 +121,7 @@ def _contact(arch: PointedArch, edge_loss: float) -> float:
 
 def _fit(tests: list[TiltTest], model: str) -> float:
     """The parameter (edge loss [m] or contact fraction) minimising the squared relative residuals."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.optimize import minimize_scalar
 
     t_min = min(t.arch.t for t in tests)
@@ -138,9 +141,6 @@ def _fit(tests: list[TiltTest], model: str) -> float:
 
 def _cov(arch: PointedArch, edge_loss: float, edge_loss_sd: float, n: int, seed: int) -> float:
     """CoV of the LP multiplier over ``n`` realisations of the imperfect joints."""
-    from specimens.blocks import discretise
-    from specimens.imperfection import Imperfection
-
     imp = Imperfection(edge_loss, edge_loss_sd)
     nominal = discretise(arch, config="glued", contact=imp.contact(arch))
     lams = np.array([lp_lambda(arch, nominal.contact, imp.bands(nominal, seed, k)) for k in range(n)])
@@ -161,8 +161,6 @@ class Calibration:
 
     def contact(self, arch: PointedArch) -> float:
         """The calibrated effective contact of ``arch``."""
-        from specimens.imperfection import Imperfection
-
         return Imperfection(self.edge_loss).contact(arch)
 
     def to_json(self) -> dict:
@@ -221,8 +219,6 @@ def load_calibration(path: str | Path | None = None) -> Calibration:
     """The calibration at ``path``; by default the one ``archdem calibrate`` stored
     (``CALIBRATION_FILE``) or, if there is none, the one shipped with archdem
     (``SHIPPED_CALIBRATION``: the fit of ``LAB_TILT_TESTS``, which a test recomputes)."""
-    import json
-
     p = Path(path) if path is not None else (CALIBRATION_FILE if CALIBRATION_FILE.is_file() else SHIPPED_CALIBRATION)
     if not p.is_file():
         raise ArchdemInputError(f"no calibration file {p} (write one with archdem calibrate)")

@@ -101,6 +101,7 @@ class FailureDomain:
 
 
 def _classify(mech: Mechanism, kind: str, a: float, x: float, restitution: float | None) -> str:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.dynamics import (
         simulate,  # scipy's integrators: imported when a domain is computed
     )
@@ -149,6 +150,7 @@ def domain_column(mech: Mechanism, kind: str, x: float, a_min: float, a_max: flo
 
 
 def _linearised_threshold(mech: Mechanism, kind: str, x: float, a_min: float, a_max: float, tol: float):
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.dynamics import linearised_collapse
 
     f = lambda a: linearised_collapse(mech, make_input(kind, a, x, abs(mech.onset)))  # noqa: E731
@@ -163,6 +165,7 @@ def _linearised_threshold(mech: Mechanism, kind: str, x: float, a_min: float, a_
 def warm_up(mech: Mechanism, restitution: float | None = None, depth: int = 8) -> None:
     """Compute the chain of post-impact mechanisms once (cached on the objects, so the worker
     processes receive it with the mechanism instead of searching it again)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.impact import post_impact
 
     m = mech

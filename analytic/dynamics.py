@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import cumulative_trapezoid, solve_ivp
 from scipy.optimize import brentq
 
 from analytic.impact import ImpactTransition, post_impact
@@ -321,7 +321,6 @@ def linearised_collapse(mech: Mechanism, motion: GroundMotion, n: int = 4001) ->
     tt = np.unique(np.concatenate([np.linspace(a, b, n) for a, b in zip(knots[:-1], knots[1:])]))
     # one-sided values inside each interval (the input may jump at the knots)
     c = (-motion.acceleration(tt) * S0 - dV0) / M0
-    from scipy.integrate import cumulative_trapezoid
     # w+ = phi' + p phi, w- = phi' - p phi: w+' = p w+ + c, w-' = -p w- + c
     wp = np.exp(p * (tt - ts)) * cumulative_trapezoid(np.exp(-p * (tt - ts)) * c, tt, initial=0.0)
     wm = np.exp(-p * (tt - ts)) * cumulative_trapezoid(np.exp(p * (tt - ts)) * c, tt, initial=0.0)

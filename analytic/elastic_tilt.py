@@ -22,6 +22,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import minimize
 
 from analytic.modes import joint_frames, stiffness_per_area
 from specimens.constants import G
@@ -193,8 +194,6 @@ def _equilibrium(joints, c, F, q0, scale):
     (below SEARCH_TOL the energy's decrease is lost in round-off). A search that runs away, or a polish
     that cycles across a joint end opening and closing (the next hinge's onset, where the assembly
     becomes a mechanism), is a collapse."""
-    from scipy.optimize import minimize
-
     found = _newton(joints, c, F, q0, scale)
     if found is not None and _stable(found[2]):
         return found[:2]

@@ -4,15 +4,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
 
 from analytic.domain import FailureDomain
 from analytic.dynamics import Response
 from specimens.constants import G
+from specimens.io import atomic_path
 
 
 def _save(fig, path: str | Path, overwrite: bool = False) -> Path:
-    from specimens.io import atomic_path
-
     path = Path(path)
     fmt = path.suffix.lstrip(".") or "png"
     with atomic_path(path, overwrite=overwrite) as tmp:
@@ -24,8 +24,6 @@ def _save(fig, path: str | Path, overwrite: bool = False) -> Path:
 def plot_response(resp: Response, path: str | Path, title: str = "", input_end: float | None = None,
                   overwrite: bool = False) -> Path:
     """Rotation / phi_cr against time, impacts marked, input end and collapse shown."""
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(7, 3.6))
     ax = fig.subplots()
     ax.plot(resp.t, resp.ratio, lw=1.2, color="C0", label="phi / phi_cr")
@@ -47,8 +45,6 @@ def plot_response(resp: Response, path: str | Path, title: str = "", input_end: 
 
 def plot_domain(dom: FailureDomain, path: str | Path, title: str = "", overwrite: bool = False) -> Path:
     """Failure domain: collapse bands (both modes) and survival, amplitude in g; normalised twin axis."""
-    from matplotlib.figure import Figure
-
     colours = {"survival": "#d9f0d3", "first-half-cycle": "#f4a582", "after-impact": "#ca0020"}
     xs = np.array([c.x for c in dom.columns])
     w = np.diff(xs).min() if len(xs) > 1 else 0.1 * xs[0]

@@ -10,8 +10,15 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import matplotlib
 import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
 
+from analytic.limit_discrete import enumerate_mechanisms
+from analytic.summary import multiplier_series
+from specimens.blocks import discretise
+from specimens.catalogue import CATALOGUE, full_scale_set
 from specimens.io import atomic_path, unique_run_path
 
 
@@ -24,9 +31,6 @@ def _save(fig, out_dir: Path, stem: str) -> Path:
 
 
 def _lambda_plot(rows, title: str, with_discrete: bool):
-    import matplotlib
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(7, 5))
     ax = fig.subplots()
     shs = sorted({r["Sh"] for r in rows})
@@ -49,8 +53,6 @@ def _lambda_plot(rows, title: str, with_discrete: bool):
 
 
 def _hinge_plot(rows, title: str):
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(12, 3.5))
     axs = fig.subplots(1, 4, sharex=True)
     shs = sorted({r["Sh"] for r in rows})
@@ -70,11 +72,6 @@ def _hinge_plot(rows, title: str):
 
 def mechanism_figure(spec_id: str, arch, config: str = "glued"):
     """Drawing of a specimen's discrete mechanism: blocks shaded by macro-block, hinges marked."""
-    from matplotlib.figure import Figure
-    from matplotlib.patches import Polygon
-
-    from analytic.limit_discrete import enumerate_mechanisms
-    from specimens.blocks import discretise
 
     asm = discretise(arch, config=config)
     kin = enumerate_mechanisms(asm)
@@ -104,9 +101,6 @@ def mechanism_figure(spec_id: str, arch, config: str = "glued"):
 def catalogue_figures(out_dir: str | os.PathLike, full_scale: bool = True, rows: list[dict] | None = None) -> list[Path]:
     """Write all limit-analysis figures to ``out_dir``; return the files written. ``rows``: the
     catalogue's :func:`analytic.summary.multiplier_series`, if the caller has computed it."""
-    from analytic.summary import multiplier_series
-    from specimens.catalogue import CATALOGUE, full_scale_set
-
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []

@@ -21,6 +21,9 @@ from dataclasses import dataclass, field
 from typing import Sequence
 
 import numpy as np
+from scipy.optimize import minimize
+from scipy.special import log_ndtr
+from scipy.stats import binomtest, norm
 
 from specimens.errors import ArchdemInputError
 
@@ -53,8 +56,6 @@ class Stripe:
 
 def stripes(intensity: Sequence[float], collapsed: Sequence[bool], modes: Sequence[str] | None = None) -> list[Stripe]:
     """Group runs by intensity (sorted) into stripes with their binomial intervals."""
-    from scipy.stats import binomtest
-
     x = np.asarray(intensity, float)
     c = np.asarray(collapsed, bool)
     if len(x) != len(c) or len(x) == 0:
@@ -70,16 +71,12 @@ def stripes(intensity: Sequence[float], collapsed: Sequence[bool], modes: Sequen
 
 
 def _nll(params: np.ndarray, lx: np.ndarray, n: np.ndarray, k: np.ndarray) -> float:
-    from scipy.special import log_ndtr
-
     mu, lb = params
     z = (lx - mu) / math.exp(lb)
     return -float(np.sum(k * log_ndtr(z) + (n - k) * log_ndtr(-z)))
 
 
 def _mle(lx: np.ndarray, n: np.ndarray, k: np.ndarray, start: tuple[float, float] | None = None) -> tuple[float, float]:
-    from scipy.optimize import minimize
-
     p = (k + 0.5) / (n + 1.0)
     mu0 = float(np.interp(0.5, p, lx)) if np.all(np.diff(p) >= 0) else float(np.mean(lx))
     spread = float(np.ptp(lx)) or 0.1
@@ -109,8 +106,6 @@ class LognormalFit:
     separated: bool = False
 
     def probability(self, x) -> np.ndarray:
-        from scipy.stats import norm
-
         return norm.cdf(np.log(np.asarray(x, float) / self.median) / self.beta)
 
     def describe(self) -> dict:

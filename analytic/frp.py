@@ -117,12 +117,14 @@ def strengthened_collapse(arch, strips: Strips | None, density: float = DEFAULT_
     :func:`analytic.limit_piers.continuous_on_piers`), and the mechanism through its hinges (four, or
     one when the strips hold the ring whole and it turns on a springing); ``load_sign`` -1: loads along
     -x (those of a positive ground acceleration), +1 along +x."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
     from analytic.linkage import four_bar_through
 
     if piers is None:
         asm = discretise(arch, n_voussoirs=n_ring, config="free", density=density)
     else:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from analytic.limit_piers import fine_cut
 
         asm = fine_cut(arch, piers, n_ring, density, 1.0)

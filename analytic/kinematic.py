@@ -30,6 +30,7 @@ from typing import Callable
 
 import numpy as np
 
+from analytic.spectra import TabulatedSpectrum, floor_spectrum, rebuild
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
@@ -83,7 +84,6 @@ def peak_acceleration(site, height: Height | None) -> float:
     floor's ``a_Z`` at a height (:func:`analytic.spectra.floor_spectrum` at T = 0)."""
     if height is None:
         return float(site.pga)
-    from analytic.spectra import floor_spectrum
 
     return float(floor_spectrum(site, 0.0, 5.0, height.z_ratio, height.T1, height.floors, height.damping1))
 
@@ -91,9 +91,8 @@ def peak_acceleration(site, height: Height | None) -> float:
 def capacity_ag(site, demand: Callable[[object], float], capacity: float) -> float:
     """The ``ag`` [m/s^2] of the site's spectrum (rebuilt at that ``ag``) at which ``demand(spectrum)``
     equals ``capacity``; ``inf`` if even 3 g does not reach it."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.optimize import brentq
-
-    from analytic.spectra import TabulatedSpectrum, rebuild
 
     if isinstance(site, TabulatedSpectrum):  # a user's spectrum scales linearly
         return site.ag * capacity / demand(site)
@@ -107,8 +106,6 @@ def capacity_ag(site, demand: Callable[[object], float], capacity: float) -> flo
 
 
 def _verdict(site, ag_cap: float, extra: dict) -> dict:
-    from analytic.spectra import TabulatedSpectrum, rebuild
-
     if math.isfinite(ag_cap):
         cap_pga = ag_cap if isinstance(site, TabulatedSpectrum) else ag_cap * rebuild(site, ag=ag_cap).S
     else:
@@ -201,7 +198,6 @@ class CapacityCurve:
         ls = str(limit_state).upper()
         if ls not in ULTIMATE_FRACTION:
             raise ArchdemInputError(f"limit state must be SLV or SLC, got {limit_state!r}")
-        from analytic.spectra import floor_spectrum, rebuild
 
         d_u = ULTIMATE_FRACTION[ls] * self.d0_star
         a_u = self.a_at(d_u)
@@ -254,6 +250,7 @@ def capacity_curve(mech, FC: float = CONFIDENCE_FACTORS["LC1"],
     def zero(extra: bool) -> float:
         if extra_force is None or not extra:
             return float(mech.phi_cr)
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from scipy.optimize import brentq
 
         lim = mech.geometric_limit()

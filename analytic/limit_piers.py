@@ -11,7 +11,7 @@ estimate that is reported.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from analytic.limit_discrete import solve_lp
 from specimens.blocks import DEFAULT_DENSITY, discretise
@@ -45,8 +45,6 @@ class PiersCollapse:
 def fine_cut(arch, piers, n_ring: int, density: float, contact: float, refine: int = 1):
     """The fine cut of the arch on ``piers``: ``n_ring / refine`` voussoirs per side, virtual pier courses
     about a quarter of the ring's thickness tall."""
-    from dataclasses import replace
-
     t_courses = math.ceil(COURSES_PER_T * piers.height / arch.t / piers.courses) // refine
     per = max(1, min(MAX_COURSES // piers.courses, t_courses))
     fine = replace(piers, courses=piers.courses * per)

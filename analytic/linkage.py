@@ -19,6 +19,7 @@ ground acceleration move towards -x (``direction = +1``); :func:`arch_four_bar` 
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, replace
 from functools import lru_cache
@@ -28,7 +29,14 @@ import numpy as np
 from scipy.optimize import brentq
 
 from analytic.layout import FourHingeLayout, Hinge, MacroBlock
+from analytic.limit_continuous import (
+    RingCuts,  # the cut family of the continuous analysis
+    continuous_collapse,
+)
+from analytic.limit_discrete import FACES, enumerate_mechanisms, macro_block_of_bodies
 from analytic.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
+from analytic.two_bar import two_bar_geometry
+from specimens.blocks import discretise
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
@@ -45,10 +53,6 @@ def _cross(ax: float, ay: float, bx: float, by: float) -> float:
 # ring material (exact region properties between cuts of the arch coordinate u)
 # ---------------------------------------------------------------------------------------------
 def _ring(arch: PointedArch, contact: float = 1.0):
-    from analytic.limit_continuous import (
-        RingCuts,  # the cut family of the continuous analysis
-    )
-
     return RingCuts(arch, contact)
 
 
@@ -352,8 +356,6 @@ def alternative_four_bars(before: FourBar, n_grid: int = 33, keep: int = 3) -> l
     properties, and ``Psi_a^T M Psi_b`` is summed piece by piece. The ``keep`` best are rebuilt
     exactly (their ``e`` is recomputed by :func:`analytic.impact.energy_restitution`).
     """
-    import itertools
-
     if before.arch is None:
         return []
     arch, rho = before.arch, before.density
@@ -474,8 +476,6 @@ class CutLayout(FourHingeLayout):
 def minimised_layout(arch: PointedArch, density: float = 500.0, contact: float = 1.0) -> CutLayout:
     """The minimum-multiplier layout of the continuous ring (docs/physics/limit-analysis.md#4-continuous-ring), with its cuts;
     ``contact``: the effective contact of the cuts."""
-    from analytic.limit_continuous import continuous_collapse
-
     res = continuous_collapse(arch, density=density, contact=contact)
     if res.layout is None:
         raise ArchdemInputError(f"no admissible four-hinge mechanism found for this arch ({res.message})")
@@ -496,7 +496,6 @@ def governing_four_bar(arch: PointedArch, density: float = 500.0, contact: float
     with ``discretise_kw``)."""
     if piers is None:
         return minimised_four_bar(arch, density, direction=1, contact=contact)
-    from specimens.blocks import discretise
 
     return mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers, **discretise_kw), direction=1)
 
@@ -507,8 +506,6 @@ def mechanism_four_bar(structure, direction: int | None = 1, name: str = "four-b
     through the bodies between them, piers included (docs/physics/dynamics.md#3-the-four-bar-linkage).
     Impacts swap every hinge to the other end of its joint. ``direction`` +1/-1 orients the
     mechanism so that that sign of ground acceleration opens it (None: as found)."""
-    from analytic.limit_discrete import enumerate_mechanisms
-
     # a positive ground acceleration loads the blocks along -x
     kin = enumerate_mechanisms(structure, load_sign=-1 if direction == 1 else 1)
     if not kin.joints:
@@ -575,8 +572,6 @@ def four_bar_through(structure, hinges, name: str = "four-bar") -> FourBar:
     left to right: hinge points at the ends of the joints' contact, bars through the bodies between
     them, oriented so that gravity resists the opening (a single hinge: the whole structure turns
     about it, :class:`RigidRotation`)."""
-    from analytic.limit_discrete import FACES, macro_block_of_bodies
-
     by_name = {j.name: j for j in structure.joints}
     joints = [by_name[n] for n, _ in hinges]
     if len(joints) == 1:  # one joint opens: the whole structure turns about it
@@ -676,8 +671,6 @@ class TwoBar(_RingLinkage):
 def arch_two_bar(arch: PointedArch, density: float = 500.0, direction: int = 1) -> TwoBar:
     """The two-bar model of ``arch`` (geometry of :mod:`analytic.two_bar`), opened by a ground
     acceleration of sign ``direction``."""
-    from analytic.two_bar import two_bar_geometry
-
     geo = two_bar_geometry(arch, density)
     ring = _ring(arch)
     half = ring.U / 2

@@ -15,6 +15,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import pyrotd
 
 from analytic.inputs import SampledMotion
 from specimens.errors import ArchdemInputError
@@ -27,8 +28,6 @@ ARIAS_WINDOW = (0.05, 0.95)
 
 def response_spectrum(motion: SampledMotion, periods, damping: float = 5.0) -> np.ndarray:
     """Pseudo-spectral acceleration [m/s^2] of ``motion`` at ``periods`` [s], ``damping`` [%] (pyrotd)."""
-    import pyrotd
-
     T = np.asarray(periods, dtype=float)
     if np.any(T <= 0) or not np.all(np.isfinite(T)):
         raise ArchdemInputError("response-spectrum periods must be positive")

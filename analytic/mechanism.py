@@ -174,6 +174,7 @@ class Mechanism:
         prev = grid[0]
         for p in grid[1:]:
             if self.dpotential(float(p)) <= 0:
+                # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
                 from scipy.optimize import (
                     brentq,  # imported on first use: the CLI imports this module
                 )

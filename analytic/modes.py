@@ -139,6 +139,7 @@ def modes(structure, kn: float, ks: float | None = None, springs: str = "ends") 
     or a single block) at rest under gravity on joints of stiffness ``kn``, ``ks`` [Pa/m] (``ks``
     default ``KS_OVER_KN kn``), their springs at the contact ends (``"ends"``, as the DEM's) or spread
     over it (``"bed"``)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.linalg import eigh
 
     kn = stiffness_per_area("normal joint stiffness kn", kn)

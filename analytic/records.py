@@ -27,6 +27,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
+from numpy.polynomial import Polynomial
 
 from analytic.inputs import GroundMotion, SampledMotion, SinePulse
 from specimens.constants import G
@@ -414,7 +415,7 @@ def baseline_correct(motion: SampledMotion, order: int = 1) -> SampledMotion:
     """
     if int(order) != order or order < 1:
         raise ArchdemInputError(f"baseline order must be an integer >= 1, got {order!r}")
-    from numpy.polynomial import Polynomial
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.integrate import cumulative_trapezoid
 
     a = motion.values
@@ -445,6 +446,7 @@ def resample(motion: SampledMotion, dt: float) -> SampledMotion:
         values = np.interp(t, motion.times, motion.values)
         how = "linear"
     else:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from scipy.signal import resample_poly
 
         ratio = motion.dt / dt

@@ -21,7 +21,8 @@ which they bend it towards the ground displacement); longer periods are refused.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import os
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -211,8 +212,6 @@ class TabulatedSpectrum(_SpectrumBase):
         return self.scale * np.interp(T, self.T, self.Se0) * np.where(T > 0, self.eta, 1.0)
 
     def rebuilt(self, ag: float | None = None, damping: float | None = None) -> "TabulatedSpectrum":
-        from dataclasses import replace
-
         scale = self.scale if ag is None else ag / float(self.Se0[0])
         eta = self.eta if damping is None else damping_correction(damping)
         params = {**self.params, "damping": self.params.get("damping", 5.0) if damping is None else damping}
@@ -227,8 +226,6 @@ def read_spectrum(path: str, damping: float = 5.0) -> TabulatedSpectrum:
     """A user's 5 %-damped elastic spectrum from a text file: two columns, period [s] and spectral
     acceleration [g], separated by spaces, tabs, commas or semicolons; ``#`` starts a comment; periods
     start at 0 and increase, up to :data:`USER_T_MAX`."""
-    import os
-
     name = os.path.basename(str(path))
     try:
         with open(path, encoding="utf-8") as fh:

@@ -1,8 +1,11 @@
 """All analytic multipliers of one arch in one JSON-ready dict (used by the CLI and the campaign)."""
 from __future__ import annotations
 
+import os
 import warnings
+from concurrent.futures import ProcessPoolExecutor
 
+from specimens.blocks import discretise
 from specimens.processes import die_with_parent
 
 
@@ -13,9 +16,9 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     ring). ``continuous``: the arch's :func:`analytic.limit_continuous.continuous_collapse` result
     at the same density, spacing, thickness and contact if the caller has it (e.g. the
     ``"continuous"`` of a :func:`multiplier_series` row); solved here otherwise (about 1 s)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_continuous import continuous_collapse
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
-    from specimens.blocks import discretise
 
     kw = dict(disc_kw or {})
     density = kw.get("density", 500.0)
@@ -59,6 +62,7 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
 
 def _discrete(asm, mu_joint: float, mu_base: float) -> tuple[dict, bool]:
     """The enumeration's and the LP's entries of :func:`analyse` for ``asm``, and whether both stand."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
 
     kin = enumerate_mechanisms(asm)
@@ -79,8 +83,8 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
     """:func:`analyse` of an arch on piers: hinges anywhere (the fine LP of
     :func:`analytic.limit_piers.continuous_on_piers`), the discrete enumeration and the LP, hinges
     named by joint."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_piers import continuous_on_piers
-    from specimens.blocks import discretise
 
     asm = discretise(arch, config=config, **kw)
     disc, stands = _discrete(asm, mu_joint, mu_base)
@@ -104,10 +108,10 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
 
 
 def _series_row(arch_spec) -> dict:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms
     from analytic.two_bar import lambda_two_bar
-    from specimens.blocks import discretise
 
     a = arch_spec.arch
     c = continuous_collapse(a)
@@ -123,9 +127,6 @@ def multiplier_series(specimens) -> list[dict]:
     full-thickness :func:`~analytic.limit_continuous.continuous_collapse` result itself
     (``"continuous"``, density 500 kg/m^3, no least spacing) for :func:`analyse`. Computed
     on all cores (about 1 s per arch)."""
-    import os
-    from concurrent.futures import ProcessPoolExecutor
-
     specimens = list(specimens)
     workers = min(len(specimens), os.cpu_count() or 1)
     if workers <= 1:

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from analytic.limit_continuous import continuous_collapse
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch, ring_half_boundary
@@ -124,8 +125,6 @@ def mu_star(arch: PointedArch, lam_rock: float | None = None, density: float = 5
     friction coefficient does.
     """
     if lam_rock is None:
-        from analytic.limit_continuous import continuous_collapse
-
         lam_rock = continuous_collapse(arch, density=density).lam
     rowL, rowR, rhs = _system(two_bar_geometry(arch, density))
     M = np.array([[rowL[0], rowL[1]], [rowR[0], rowR[1]]])

@@ -36,8 +36,9 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
     from dem.core.settings import Settings
     from dem.core.simulate import SimResult, simulate
     from dem.experiments.assessment.run import assess_with_records
-    from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.friction_map.run import catalogue_map
+    from dem.experiments.shake.domain import dem_failure_domain
+    from dem.experiments.shake.file import load_shake, save_shake
     from dem.experiments.shake.run import ShakeProtocol, ShakeResult, shake
     from dem.experiments.shake.thresholds import (
         ThresholdResult,
@@ -45,9 +46,8 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
         static_onset,
         threshold,
     )
-    from dem.experiments.tilt.run import TiltProtocol, TiltResult, tilt
-    from dem.experiments.shake.file import load_shake, save_shake
     from dem.experiments.tilt.file import load_result, save_result
+    from dem.experiments.tilt.run import TiltProtocol, TiltResult, tilt
 
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)

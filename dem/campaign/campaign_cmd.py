@@ -5,6 +5,7 @@ import argparse
 import time
 from pathlib import Path
 
+from dem.common.campaign import CampaignContext
 from dem.common.joints import STUDY_JOINTS
 from dem.common.options import (
     add_contact_law_arguments,
@@ -15,13 +16,13 @@ from dem.common.options import (
     workers_option,
     writable_dir,
 )
+from specimens.catalogue import select_specimens
+from specimens.errors import ArchdemInputError
 
 
 def _campaign(args: argparse.Namespace) -> int:
-    from dem.common.campaign import CampaignContext
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.campaign.runner import all_steps, run_campaign
-    from specimens.catalogue import select_specimens
-    from specimens.errors import ArchdemInputError
 
     specs = select_specimens(args.specimens)
     steps = None
@@ -34,10 +35,12 @@ def _campaign(args: argparse.Namespace) -> int:
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(all_steps())}")
     for name in ("piers", "fragility"):
         if getattr(args, name):
+            # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
             from dem.campaign.runner import default_steps
 
             steps = (steps or default_steps()) + ([] if steps and name in steps else [name])
     if args.scheduler:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.studies.sweep import check_scheduler
 
         check_scheduler(args.scheduler)  # before the output folder is made
@@ -49,6 +52,7 @@ def _campaign(args: argparse.Namespace) -> int:
                           quick=args.quick, workers=args.workers, contact=args.contact, scheduler=args.scheduler,
                           joints=joints)
     t0 = time.perf_counter()
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
     from dem.campaign.runner import default_steps
 
@@ -79,8 +83,6 @@ def _duration(seconds: float) -> str:
 
 
 def register(sub) -> None:
-    from dem.common.campaign import CampaignContext
-
     p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
     p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(CampaignContext, "config"))

@@ -9,7 +9,10 @@ line on stderr and exit code 2.
 from __future__ import annotations
 
 import argparse
+import os
+import select
 import sys
+from importlib.metadata import version
 
 from dem.campaign import campaign_cmd
 from dem.cli import analytic_cmd, rock_cmd, specimens_cmd
@@ -54,7 +57,6 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="archdem", description=__doc__.splitlines()[0])
-    from importlib.metadata import version
 
     parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
@@ -81,16 +83,12 @@ def main(argv: list[str] | None = None) -> int:
         if not _stdout_gone():
             raise  # a pipe of our own (e.g. to a worker) broke: that is a failure, not a closed reader
         # the reader of our output went away (e.g. | head): no traceback, and none at exit either
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
 
 
 def _stdout_gone() -> bool:
     """Whether standard output is a pipe whose reader has closed it."""
-    import select
-
     try:
         poller = select.poll()
         poller.register(sys.stdout.fileno(), select.POLLOUT)

@@ -5,20 +5,20 @@ from __future__ import annotations
 import argparse
 import math
 
+from analytic.domain import make_input
+from analytic.records import read_record
 from dem.common.options import print_json, writable_file
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 
 def _run_rock(args: argparse.Namespace) -> int:
-    from analytic.domain import make_input
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.dynamics import simulate
-    from specimens.constants import G
 
     rest = restitution_option(args.restitution)
     if args.record is not None:
-        from analytic.records import read_record
-
         if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
             raise ArchdemInputError("--scale (a positive factor) is needed with --record")
         if args.plot:
@@ -45,6 +45,7 @@ def _run_rock(args: argparse.Namespace) -> int:
         what = f"{args.input} {x:g} {'s' if pulses else 'Hz'}, {args.amplitude:g} g"
     r = simulate(mech, motion, restitution=rest, record=True)
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from analytic.figures_dynamics import plot_response
 
         plot_response(r, args.plot, title=f"{label}: {what}", input_end=motion.duration)

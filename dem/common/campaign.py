@@ -1,11 +1,13 @@
 """What every campaign step gets (:class:`CampaignContext`) and the small file helpers they share."""
 from __future__ import annotations
 
+import csv
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 from dem.common.joints import contact_fraction, joint_law, joint_law_text
+from specimens.io import atomic_path, to_json
 
 
 @dataclass
@@ -38,8 +40,6 @@ class CampaignContext:
 
 
 def write_csv(path: Path, rows: list[dict]) -> None:
-    import csv
-
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0]))
@@ -52,8 +52,6 @@ def pct(a: float, b: float) -> float:
 
 
 def write_json_atomic(path: Path, obj: dict) -> None:
-    from specimens.io import atomic_path, to_json
-
     with atomic_path(path, overwrite=True) as tmp:
         tmp.write_text(to_json(obj, indent=2))
 

@@ -6,14 +6,17 @@ import dataclasses
 import inspect
 import json
 import math
+import os
+from pathlib import Path
 from typing import Any
 
 from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
 from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
-from specimens.catalogue import SPECIMEN_WIDTH
+from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.errors import ArchdemInputError
-from specimens.io import can_make_dir, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.geometry import PointedArch
+from specimens.io import can_make_dir, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
@@ -95,9 +98,6 @@ def arch_from_args(args: argparse.Namespace):
 
 
 def _arch_from_args(args: argparse.Namespace):
-    from specimens.catalogue import get_specimen
-    from specimens.geometry import PointedArch
-
     for name in ("Ri", "Re", "e", "Rc", "width"):
         v = getattr(args, name, None)
         lo = 0.0 if name == "e" else MIN_LENGTH_M
@@ -230,8 +230,6 @@ FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
 def figure_file(path: str, option: str = "--plot"):
     """A new figure file: a known suffix, not an existing file or folder; checked before any run."""
-    from pathlib import Path
-
     p = Path(path)
     if p.suffix.lower() not in FIGURE_SUFFIXES:
         raise ArchdemInputError(f"{option} must end in {', '.join(FIGURE_SUFFIXES)}, got {p.name!r}")
@@ -243,9 +241,6 @@ def figure_file(path: str, option: str = "--plot"):
 def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[str, bool]:
     """``(path, resume)`` of a study command's ``--out`` / ``--resume`` (one rule for every study):
     a mistyped ``--resume`` name is refused rather than starting a new study under it."""
-    import os
-
-    from specimens.io import unique_run_path
 
     if args.resume is not None and args.out:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")

@@ -52,19 +52,29 @@ import datetime as _dt
 import hashlib
 import json
 import math
+import multiprocessing
 import os
 import socket
 import sys
 import time
 import traceback
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import as_completed as pool_as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterator, Sequence
+from urllib.parse import urlsplit
 
+import h5py
 import numpy as np
+from tqdm import tqdm
 
+from dem.core.extras import require
+from dem.core.provenance import provenance
 from specimens.errors import ArchdemInputError
-from specimens.io import exclusive, json_default, writable_dir
+from specimens.io import atomic_path, exclusive, json_default, writable_dir
+from specimens.processes import die_with_parent, pool_worker_init
 
 LAYOUT_VERSION = 1
 
@@ -163,8 +173,6 @@ class StudyResult:
 
 # ----------------------------------------------------------------------------- HDF5 values
 def _write_value(g, name: str, value: Any) -> None:
-    import h5py
-
     if isinstance(value, dict):
         sub = g.create_group(name)
         sub.attrs["kind"] = "dict"
@@ -219,15 +227,11 @@ def _now() -> str:
 
 
 def _versions() -> dict:
-    from dem.core.provenance import provenance
-
     return provenance(extra=("dask", "distributed", "tqdm"))
 
 
 def _write_case(path: Path, key: str, case: dict, out: dict) -> CaseRecord:
     """Store one finished case (replacing an earlier failed entry) and close the file."""
-    import h5py
-
     rec = CaseRecord(key, case, out["status"], out["results"], out["error"], float(out["wall"]),
                      out.get("worker", ""), _now())
     with h5py.File(path, "a") as f:
@@ -269,8 +273,6 @@ def _read_attrs(f) -> dict:
 
 def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> StudyResult:
     """Records stored in a study file (all of them, or those of ``cases`` in that order)."""
-    import h5py
-
     path = Path(path)
     try:
         f = h5py.File(path, "r")
@@ -301,9 +303,6 @@ def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> 
 
 def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
     """Create the study file, or check it for resuming; return the keys stored with status ok."""
-    import h5py
-
-    from specimens.io import atomic_path
 
     params_json, seed_json = canonical_json(study_attrs), canonical_json(seed)
     if path.exists():
@@ -338,10 +337,6 @@ def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None,
 # ----------------------------------------------------------------------------- executors
 class _LocalPool:
     def __init__(self, workers: int):
-        import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
-
-        from specimens.processes import pool_worker_init
 
         self.ex = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
                                       initializer=pool_worker_init)
@@ -350,9 +345,7 @@ class _LocalPool:
         return self.ex.submit(fn, *args)
 
     def as_completed(self, futures):
-        from concurrent.futures import as_completed
-
-        return as_completed(futures)
+        return pool_as_completed(futures)
 
     def close(self, cancel: bool) -> None:
         if cancel:
@@ -375,10 +368,6 @@ SCHEDULER_CONNECT_TIMEOUT = 3.0
 def check_scheduler(address: str, timeout: float = SCHEDULER_CONNECT_TIMEOUT) -> None:
     """Refuse, in one line, a scheduler address that is not ``tcp://HOST:PORT`` or where nothing
     accepts a connection within ``timeout`` [s] (Dask's own client would retry for its full timeout)."""
-    import socket
-    from urllib.parse import urlsplit
-
-    from dem.core.extras import require
 
     require("distributed", "a Dask scheduler (--scheduler)")  # a missing extra is named first
     try:
@@ -396,8 +385,6 @@ def check_scheduler(address: str, timeout: float = SCHEDULER_CONNECT_TIMEOUT) ->
 
 class _DaskPool:
     def __init__(self, address: str):
-        from dem.core.extras import require
-
         Client = require("distributed", "a Dask scheduler (--scheduler)").Client
 
         try:
@@ -409,6 +396,7 @@ class _DaskPool:
         return self.client.submit(fn, *args, pure=False)
 
     def as_completed(self, futures):
+        # deferred: an optional extra (docs/architecture.md#imports)
         from distributed import as_completed
 
         return as_completed(futures)
@@ -430,9 +418,6 @@ def executor(workers: int, scheduler: str | None = None) -> Iterator[tuple[Any, 
         finally:
             pool.close(True)
         return
-    from concurrent.futures import ProcessPoolExecutor
-
-    from specimens.processes import die_with_parent
 
     with ProcessPoolExecutor(max_workers=workers, initializer=die_with_parent) as ex:
         yield ex, workers
@@ -494,9 +479,6 @@ def lock_path(study: str | os.PathLike) -> Path:
 
 
 def _execute(todo, func, path, workers, scheduler, progress) -> None:
-    from concurrent.futures.process import BrokenProcessPool
-
-    from tqdm import tqdm
 
     pool = _DaskPool(scheduler) if scheduler else _LocalPool(min(int(workers or os.cpu_count() or 1), len(todo)))
     bar = tqdm(total=len(todo), desc="cases", unit="case", file=sys.stderr, dynamic_ncols=True,

@@ -6,6 +6,10 @@ from __future__ import annotations
 import argparse
 import math
 
+from analytic.assessment import NOH_GUMBAD_FRP, assess, assess_monument, monument_site
+from analytic.frp import GAMMA_FRP, Strips, strengthened_collapse
+from analytic.kinematic import CONFIDENCE_FACTORS, Height
+from analytic.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum
 from dem.common.options import (
     add_arch_arguments,
     add_engine_argument,
@@ -16,15 +20,16 @@ from dem.common.options import (
     print_json,
     workers_option,
 )
+from dem.core.settings import Settings
+from specimens.blocks import DEFAULT_DENSITY
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
+from specimens.io import writable_file
 
 CODES = ("ntc2018", "ec8")
 
 
 def _spectrum(args: argparse.Namespace):
-    from analytic.spectra import ec8, ntc2018, read_spectrum
-
     if args.spectrum is None:
         raise ArchdemInputError("--spectrum ntc2018|ec8|FILE is needed (the site's elastic spectrum)")
     if args.spectrum not in CODES:
@@ -48,8 +53,6 @@ def _spectrum(args: argparse.Namespace):
 
 
 def _height(args: argparse.Namespace):
-    from analytic.kinematic import Height
-
     given = [args.z_ratio, args.T1, args.floors]
     if all(v is None for v in given):
         if args.building_damping != default_of(Height, "damping1"):
@@ -61,8 +64,6 @@ def _height(args: argparse.Namespace):
 
 
 def _strips(args: argparse.Namespace):
-    from analytic.frp import Strips
-
     if args.frp is None:
         return None
     parts = args.frp.split(",")
@@ -88,8 +89,7 @@ def _period_range(args: argparse.Namespace) -> tuple[float, float] | None:
 def _run_monument(args: argparse.Namespace, monument) -> int:
     """A monument's configurations (:mod:`specimens.monuments`), unreinforced and with FRP strips,
     against its site (or the spectrum given)."""
-    from analytic.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
-    from analytic.frp import Strips
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.assessment.figure import hinges_text
 
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
@@ -123,6 +123,7 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
 
 def _print(title: str, hinges: list[dict], res) -> None:
     d = res.describe()
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.assessment.figure import hinges_text
 
     print(f"  {title}: hinges at {hinges_text(hinges)}")
@@ -138,10 +139,8 @@ def _print(title: str, hinges: list[dict], res) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from analytic.assessment import assess
-    from dem.core.settings import Settings
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.assessment.run import assess_with_records
-    from specimens.io import writable_file
     from specimens.monuments import MONUMENTS
 
     if args.id in MONUMENTS:
@@ -164,9 +163,6 @@ def _run(args: argparse.Namespace) -> int:
            "mechanism": mech.summary(), **res.describe()}
     frp = None
     if strips is not None:
-        from analytic.frp import strengthened_collapse
-        from specimens.blocks import DEFAULT_DENSITY
-
         kw = discretisation_kwargs(args, arch)
         sc = strengthened_collapse(arch, strips, kw.get("density", DEFAULT_DENSITY), kw.get("piers"))
         frp = assess(sc.mechanism, site, args.FC, args.q, args.limit_state, height, alpha0=sc.lam,
@@ -176,6 +172,7 @@ def _run(args: argparse.Namespace) -> int:
     if a.records is not None:
         out["records"] = a.records.describe()
     if args.report is not None:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.assessment.figure import write_report
 
         write_report(args.report, label, site, mech, res, out, frp, out.get("frp"))
@@ -206,11 +203,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.assessment import assess
-    from analytic.frp import GAMMA_FRP
-    from analytic.kinematic import CONFIDENCE_FACTORS, Height
-    from analytic.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ntc2018
-
     p = sub.add_parser("assess", help="code-based check: kinematic analysis (linear and non-linear) of the arch's "
                                       "mechanism against a site spectrum, with or without FRP strips",
                        description=__doc__.splitlines()[0])

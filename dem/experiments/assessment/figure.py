@@ -8,8 +8,11 @@ import json
 import math
 
 import numpy as np
+from matplotlib.figure import Figure
 
+from analytic.spectra import rebuild
 from specimens.constants import G
+from specimens.io import atomic_path
 
 _CSS = ("body{font-family:system-ui,sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
         "h1{border-bottom:2px solid #8a6d3b}table{border-collapse:collapse;font-size:13px;margin:0.8em 0}"
@@ -25,9 +28,6 @@ def hinges_text(hinges: list[dict]) -> str:
 
 def spectra_figure(site, damping: float):
     """Acceleration and displacement spectra of the site at 5 % and at the mechanism's ``damping`` [%]."""
-    from matplotlib.figure import Figure
-
-    from analytic.spectra import rebuild
 
     T = np.linspace(0.0, site.t_max, 400)
     fig = Figure(figsize=(7, 3.2))
@@ -47,9 +47,6 @@ def capacity_figure(res, site, frp=None):
     """Capacity curves a*(d*) (and the codes' linear one) against the demand spectrum at the
     mechanism's damping in acceleration-displacement form, with the ultimate displacement and the
     period line of the displacement check."""
-    from matplotlib.figure import Figure
-
-    from analytic.spectra import rebuild
 
     fig = Figure(figsize=(6, 4))
     ax = fig.subplots()
@@ -103,8 +100,6 @@ def _figures_table(d: dict) -> str:
 
 def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, frp_out: dict | None = None) -> None:
     """One self-contained HTML page: site, mechanism, figures, checks, the verdict (never overwrites)."""
-    from specimens.io import atomic_path
-
     chk = next(x for x in res.checks if x["kind"] == "non-linear")
     verdict = (f"<p>Governing safety index <b>{res.safety_index:.2f}</b>: "
                f"<span class='{'yes' if res.verified else 'no'}'>{'verified' if res.verified else 'NOT verified'}"

@@ -4,16 +4,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from analytic.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
+from analytic.frp import Strips
 from dem.common.campaign import CampaignContext, write_csv
 from specimens.constants import G
+from specimens.monuments import NOH_GUMBAD
 
 
 def step_assess(ctx: CampaignContext, d: Path) -> dict:
     """The code's kinematic checks of the monument's three configurations, with and without strips."""
-    from analytic.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
-    from analytic.frp import Strips
-    from specimens.monuments import NOH_GUMBAD
-
     site = monument_site()
     rows = assess_monument(NOH_GUMBAD, site, Strips(*NOH_GUMBAD_FRP))
     table = [{"configuration": r["configuration"], "frp": r["frp"], "lambda": r["lambda"], "e_star": r["e_star"],

@@ -5,15 +5,14 @@ from __future__ import annotations
 import argparse
 
 from dem.common.options import default_of, print_json, workers_option, writable_file
+from dem.core.engines import available_engines
+from dem.core.settings import Settings
+from dem.experiments.compare_engines.run import FRICTIONS, compare, summary
+from specimens.catalogue import select_specimens
 from specimens.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.core.engines import available_engines
-    from dem.core.settings import Settings
-    from dem.experiments.compare_engines.run import compare, summary
-    from specimens.catalogue import select_specimens
-
     ids = [s.id for s in select_specimens(args.specimens)]
     engines = tuple(e.strip() for e in args.engines.split(",") if e.strip())
     for e in engines:
@@ -29,6 +28,7 @@ def _run(args: argparse.Namespace) -> int:
         writable_file(args.plot)
     rows = compare(ids, args.config, engines, frictions, base, workers=args.workers)
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.compare_engines.figure import save_engine_comparison
 
         save_engine_comparison(rows, args.plot)
@@ -47,9 +47,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from dem.core.settings import Settings
-    from dem.experiments.compare_engines.run import FRICTIONS, compare
-
     engines = ",".join(default_of(compare, "engines"))
     p = sub.add_parser("compare-engines", help="tilt lambda from both engines vs limit analysis, per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")

@@ -4,12 +4,13 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
+
+from specimens.io import atomic_path
 
 
 def plot_engine_comparison(rows, axes=None):
     """Two panels (no sliding, reference friction): lambda per specimen from each engine and the LP."""
-    from matplotlib.figure import Figure
-
     cases = [f for f in ("none", "reference") if any(r.friction == f for r in rows)]
     if axes is None:
         axes = Figure(figsize=(6 * len(cases), 4.2)).subplots(1, len(cases), squeeze=False)
@@ -31,8 +32,6 @@ def plot_engine_comparison(rows, axes=None):
 
 def save_engine_comparison(rows, path: str | Path) -> Path:
     """Write the figure (png/pdf/svg) atomically."""
-
-    from specimens.io import atomic_path
 
     path = Path(path)
     axes = plot_engine_comparison(rows)

@@ -10,10 +10,15 @@ for orientation only, and the engines are compared with each other.
 from __future__ import annotations
 
 import math
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
+from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.check import TiltCheck, check_result, reference_lp
+from dem.experiments.tilt.run import tilt
+from specimens.blocks import discretise
+from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
 from specimens.processes import die_with_parent
@@ -69,6 +74,7 @@ class ComparisonRow:
 
 
 def _engine_version(name: str) -> str:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import package_version
 
     return package_version(name)
@@ -77,8 +83,6 @@ def _engine_version(name: str) -> str:
 def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> TiltCheck:
     """The hold-protocol tilt test of ``model`` with ``settings.engine`` beside the LP of its blocks
     (``assembly``: default the model's own)."""
-    from dem.experiments.tilt.run import tilt
-
     assembly = model.assembly if assembly is None else assembly
     return check_result(tilt(model, settings, protocol, assembly=assembly), assembly)
 
@@ -88,11 +92,6 @@ def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] =
                      protocol=None) -> list[ComparisonRow]:
     """Rows (one per friction case) for catalogue specimen ``sid``; ``base`` settings other than
     friction and engine (e.g. ``dt``) apply to every run."""
-    from dem.core.model import from_assembly
-    from dem.experiments.tilt.run import tilt
-    from specimens.blocks import discretise
-    from specimens.catalogue import get_specimen
-
     for f in frictions:
         if f not in FRICTIONS:
             raise ArchdemInputError(f"friction case must be one of {', '.join(FRICTIONS)}, got {f!r}")
@@ -124,8 +123,6 @@ def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("
     if workers <= 1 or len(jobs) <= 1:
         out = [_one(j) for j in jobs]
     else:
-        from concurrent.futures import ProcessPoolExecutor
-
         with ProcessPoolExecutor(min(workers, len(jobs)), initializer=die_with_parent) as ex:
             out = list(ex.map(_one, jobs))
     return [r for rows in out for r in rows]

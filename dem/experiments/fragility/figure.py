@@ -2,13 +2,14 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.figure import Figure
+
+from dem.experiments.shake.figure import _save
 
 
 def fragility_figure(res):
     """P(collapse) per stripe with its binomial interval, the fitted lognormal with its median's
     interval, and the deterministic threshold, one colour per curve."""
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(6.5, 4.2))
     ax = fig.subplots()
     for k, c in enumerate(res.curves):
@@ -35,6 +36,4 @@ def fragility_figure(res):
 
 
 def save_fragility_figure(res, path) -> None:
-    from dem.experiments.shake.figure import _save
-
     _save(fragility_figure(res), path)

@@ -4,12 +4,12 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 
+from specimens.io import atomic_path
+
 
 def write_tables(res, study_path) -> Path:
     """``STEM-stripes.csv`` (one row per stripe) and ``STEM-fits.csv`` (one row per curve) beside the
     study; derived from the study, so a resumed study rewrites them. Returns the stripes' path."""
-    from specimens.io import atomic_path
-
     study = Path(study_path)
     stripes = study.with_name(study.stem + "-stripes.csv")
     fits = study.with_name(study.stem + "-fits.csv")

@@ -23,16 +23,31 @@ from dem.common.options import (
     study_path,
     workers_option,
 )
+from dem.core.model import from_assembly, single_block
+from dem.core.settings import Settings
+from dem.experiments.fragility.run import (
+    DEFAULT_EDGE_LOSS_SD,
+    DEFAULT_FRICTION_COV,
+    DEFAULT_SIZE_SD,
+    Perturbation,
+    arch_structure,
+    block_structure,
+    fragility,
+    make_cases,
+    prepared_record,
+    record_spec,
+    sine_spec,
+)
+from dem.experiments.shake.run import ShakeProtocol
+from dem.experiments.shake.shake_cmd import MAX_AMPLITUDE_G, MAX_SINE_HZ, MIN_SINE_HZ
+from dem.experiments.shake.thresholds import threshold
+from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 
 def _structure(args: argparse.Namespace):
     """``(label, structure entry, nominal model)``: an arch as ``archdem shake`` cuts it, or a block."""
-    from dem.core.model import from_assembly, single_block
-    from dem.experiments.fragility.run import arch_structure, block_structure
-    from specimens.blocks import DEFAULT_DENSITY, discretise
-
     block = block_from_args(args)
     if block is not None:
         b, h = block
@@ -48,8 +63,6 @@ def _structure(args: argparse.Namespace):
 
 
 def _settings(args: argparse.Namespace) -> dict:
-    from dem.core.settings import Settings
-
     s = {"engine": args.engine, "mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": bool(args.planar),
          **contact_law_settings(args, getattr(args, "id", None))}
     if args.dt is not None:
@@ -71,9 +84,6 @@ def _grid(text: str, what: str, lo: float, hi: float, unit: str) -> list[float]:
 
 def _groups(args: argparse.Namespace) -> tuple[list, dict]:
     """The study's groups ``(name, unit, [(intensity, motion spec), ...])`` and what they are."""
-    from dem.experiments.shake.shake_cmd import MAX_AMPLITUDE_G, MAX_SINE_HZ, MIN_SINE_HZ
-    from dem.experiments.fragility.run import prepared_record, record_spec, sine_spec
-
     if (args.sine is None) == (args.records is None):
         raise ArchdemInputError("give --sine F[,F...] with --amplitudes, or --records FILE... with --im and --stripes")
     if args.sine is not None:
@@ -84,6 +94,7 @@ def _groups(args: argparse.Namespace) -> tuple[list, dict]:
         return [(f"{f:g} Hz", "g", [(a, sine_spec(f, a)) for a in amps]) for f in freqs], {"input": "sine", "freqs": freqs}
     if args.stripes is None or args.im is None or args.amplitudes is not None:
         raise ArchdemInputError("--records goes with --im pga|pgv|sa:T and --stripes; --amplitudes belongs to --sine")
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.matching import intensity_measure, parse_im
 
     im = parse_im(args.im)
@@ -105,9 +116,6 @@ def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dic
     """Per frequency, the least collapsing amplitude of the nominal structure (``archdem threshold``)."""
     if info["input"] != "sine" or args.no_deterministic:
         return {}
-    from dem.core.settings import Settings
-    from dem.experiments.shake.run import ShakeProtocol
-    from dem.experiments.shake.thresholds import threshold
 
     out = {}
     for (name, _, items), f in zip(groups, info["freqs"]):
@@ -120,8 +128,6 @@ def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dic
 
 def _perturbation(args: argparse.Namespace, structure: dict):
     """The realisations' perturbations: joint edge loss for an arch, dimensions for a block, friction."""
-    from dem.experiments.fragility.run import DEFAULT_EDGE_LOSS_SD, DEFAULT_SIZE_SD, Perturbation
-
     block = structure["kind"] == "block"
     if block and (args.edge_loss is not None or args.edge_loss_sd is not None):
         raise ArchdemInputError("--edge-loss and --edge-loss-sd perturb an arch's joints; a block takes --size-sd")
@@ -138,7 +144,7 @@ def _perturbation(args: argparse.Namespace, structure: dict):
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.experiments.fragility.run import fragility, make_cases
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import StudyInterrupted, check_scheduler
     label, structure, model = _structure(args)
     settings = _settings(args)
@@ -161,10 +167,12 @@ def _run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         print(f"archdem: interrupted; finished runs are stored, continue with --resume {path}", file=sys.stderr)
         return 130
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.fragility.file import write_tables
 
     csv_path = write_tables(res, path)
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.fragility.figure import save_fragility_figure
 
         save_fragility_figure(res, args.plot)
@@ -185,10 +193,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from dem.core.settings import Settings
-    from dem.experiments.fragility.run import DEFAULT_EDGE_LOSS_SD, DEFAULT_FRICTION_COV, DEFAULT_SIZE_SD
-    from specimens.blocks import discretise
-
     p = sub.add_parser("fragility", help="collapse probability and lognormal fragility from ensembles of perturbed "
                                          "realisations (sine pulses or a suite of records)",
                        description=__doc__.splitlines()[0])

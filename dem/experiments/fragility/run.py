@@ -23,8 +23,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from analytic.inputs import SampledMotion, SinePulse
+from analytic.records import baseline_correct, read_record
+from dem.core.model import from_assembly, single_block
+from dem.core.settings import Settings
+from dem.experiments.shake.run import ShakeProtocol, shake
+from dem.experiments.tilt.case import arch_from_params, arch_params
+from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
+from specimens.imperfection import Imperfection
+from specimens.piers import Piers
 
 STUDY_KIND = "fragility"
 #: Most realisations per stripe and most runs per study (a typo, not a study, beyond them).
@@ -64,9 +73,6 @@ class Perturbation:
 def arch_structure(arch, config: str = "glued", n_voussoirs: int | None = None, contact: float = 1.0,
                    piers=None, density: float | None = None) -> dict:
     """The structure entry of a case: an arch cut as ``archdem shake`` cuts it."""
-    from dem.experiments.tilt.case import arch_params
-    from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS
-
     return {"kind": "arch", "arch": arch_params(arch), "config": config,
             "n_voussoirs": int(n_voussoirs or DEFAULT_VOUSSOIRS), "contact": float(contact),
             "density": float(density or DEFAULT_DENSITY), **({} if piers is None else {"piers": piers.describe()})}
@@ -78,16 +84,10 @@ def block_structure(b: float, h: float, width: float = 0.1, density: float = 500
 
 
 def _model(structure: dict, pert: dict, seed: int, k: int):
-    from dem.core.model import from_assembly, single_block
-
     if structure["kind"] == "block":
         rng = np.random.default_rng([int(seed), int(k), 2])
         db, dh = rng.normal(0.0, pert["size_sd"], 2) if pert["size_sd"] > 0 else (0.0, 0.0)
         return single_block(structure["b"] + db, structure["h"] + dh, structure["width"], structure["density"])
-    from dem.experiments.tilt.case import arch_from_params
-    from specimens.blocks import discretise
-    from specimens.imperfection import Imperfection
-    from specimens.piers import Piers
 
     arch = arch_from_params(structure["arch"])
     kw = dict(n_voussoirs=structure["n_voussoirs"], config=structure["config"], density=structure["density"],
@@ -101,8 +101,6 @@ def _model(structure: dict, pert: dict, seed: int, k: int):
 
 
 def _friction(settings: dict, pert: dict, seed: int, k: int) -> dict:
-    from dem.core.settings import Settings
-
     base = Settings(**settings)
     cov = pert["friction_cov"]
     if cov == 0:
@@ -130,17 +128,14 @@ def record_spec(path: str, scale: float, window: tuple[int, int]) -> dict:
 def prepared_record(path: str):
     """A record as the fragility runs it: baseline-corrected and cut to its significant duration;
     returns the motion and its sample window."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.matching import arias_window, significant_window
-    from analytic.records import baseline_correct, read_record
 
     m = baseline_correct(read_record(path))
     return significant_window(m), arias_window(m)
 
 
 def _motion(spec: dict):
-    from analytic.inputs import SampledMotion, SinePulse
-    from analytic.records import baseline_correct, read_record
-
     if spec["kind"] == "sine":
         return SinePulse(spec["amplitude_g"] * G, spec["freq"])
     m = baseline_correct(read_record(spec["path"]))
@@ -153,9 +148,6 @@ def shake_case(case: dict) -> dict:
     """Case function (DEM): one shake run of one realisation at one intensity. Returns ``collapsed``,
     ``mode``, ``peak_displacement`` [m] (largest point displacement), ``t_collapse`` [s], the frictions
     of the realisation and ``wall_s``."""
-    from dem.core.settings import Settings
-    from dem.experiments.shake.run import ShakeProtocol, shake
-
     seed, k = int(case["seed"]), int(case["realisation"])
     model = _model(case["structure"], case["perturbation"], seed, k)
     settings = Settings(**{**case["settings"], **_friction(case["settings"], case["perturbation"], seed, k)})
@@ -230,6 +222,7 @@ def fragility(label: str, structure: dict, settings: dict, perturbation: Perturb
               resume: bool = False, progress: bool = True, deterministic: dict | None = None) -> FragilityResult:
     """Run (or resume) the study of ``groups`` x ``n`` realisations and fit each group's curve;
     ``deterministic``: group -> threshold of the nominal structure, reported beside the fit."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.fragility import fit_lognormal, stripes
     from dem.studies.sweep import case_key, run_study
 

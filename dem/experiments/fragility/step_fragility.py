@@ -5,7 +5,27 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
+from matplotlib.figure import Figure
+
+from analytic.domain import failure_domain
+from analytic.linkage import minimised_four_bar
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.core.model import as_model
+from dem.core.settings import Settings
+from dem.experiments.fragility.figure import fragility_figure
+from dem.experiments.fragility.file import write_tables
+from dem.experiments.fragility.run import (
+    DEFAULT_EDGE_LOSS_SD,
+    DEFAULT_FRICTION_COV,
+    Perturbation,
+    arch_structure,
+    fragility,
+    sine_spec,
+)
+from dem.experiments.shake.run import ShakeProtocol
+from dem.experiments.shake.thresholds import static_onset, threshold
+from specimens.constants import G
 
 #: Frequencies [Hz] and amplitude grids (multiples of the static onset lambda) of the study: around the
 #: threshold at 2 Hz (~1.2 lambda), wider where thresholds scatter (4, 6 Hz).
@@ -27,26 +47,6 @@ def fragility_plan(ctx: CampaignContext) -> tuple[list, list[float], int]:
 def step_fragility(ctx: CampaignContext, d: Path) -> dict:
     """Per specimen and frequency: the fitted median and beta, the nominal structure's threshold and
     the four-bar's overturning amplitude."""
-    import numpy as np
-    from matplotlib.figure import Figure
-
-    from analytic.domain import failure_domain
-    from analytic.linkage import minimised_four_bar
-    from dem.core.model import as_model
-    from dem.core.settings import Settings
-    from dem.experiments.fragility.run import (
-        DEFAULT_EDGE_LOSS_SD,
-        DEFAULT_FRICTION_COV,
-        Perturbation,
-        arch_structure,
-        fragility,
-        sine_spec,
-    )
-    from dem.experiments.shake.run import ShakeProtocol
-    from dem.experiments.shake.thresholds import static_onset, threshold
-    from dem.experiments.fragility.file import write_tables
-    from dem.experiments.fragility.figure import fragility_figure
-    from specimens.constants import G
 
     specs, freqs, n = fragility_plan(ctx)
     pert = Perturbation(edge_loss_sd=DEFAULT_EDGE_LOSS_SD, friction_cov=DEFAULT_FRICTION_COV)

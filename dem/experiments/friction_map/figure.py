@@ -16,6 +16,9 @@ import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 
+from specimens.constants import REFERENCE_MU_JOINT
+from specimens.io import writable_dir
+
 MODE_COLOURS = {"rocking": "tab:green", "sliding": "tab:blue", "mixed": "tab:purple", "none": "0.6",
                 "failed": "tab:red"}
 
@@ -96,8 +99,6 @@ def plot_lambda_mu(smap, ax=None):
 
 def plot_mode_grid(result, mu_ref: float | None = None, ax=None):
     """Sh x Sd grid of DEM modes at ``mu_ref`` (nearest grid value; default the reference friction)."""
-    from specimens.constants import REFERENCE_MU_JOINT
-
     if ax is None:
         ax = Figure(figsize=(7, 4.5)).subplots()
     grid = np.asarray(result.mus)
@@ -127,8 +128,6 @@ def plot_mode_grid(result, mu_ref: float | None = None, ax=None):
 
 def save_map_figures(result, out_dir: str | os.PathLike) -> list[Path]:
     """Write the threshold map, the mode grid and one lambda(mu) figure per specimen (PNG)."""
-    from specimens.io import writable_dir
-
     d = writable_dir(out_dir)
     paths = []
     for name, fn in (("threshold_map", plot_threshold_map), ("mode_grid", plot_mode_grid)):

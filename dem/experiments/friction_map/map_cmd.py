@@ -19,12 +19,14 @@ from dem.common.options import (
     workers_option,
     writable_dir,
 )
+from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
+from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
+from dem.experiments.tilt.case import MAP_TILT_TOL
+from specimens.catalogue import FULL_SCALE_SPANS, full_scale_set, select_specimens
 from specimens.errors import ArchdemInputError
 
 
 def _specimens(args: argparse.Namespace) -> list:
-    from specimens.catalogue import full_scale_set, select_specimens
-
     if not args.full_scale:
         return select_specimens(args.specimens)
     pool = {s.id: s for s in full_scale_set()}
@@ -42,13 +44,11 @@ def _specimens(args: argparse.Namespace) -> list:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.core.settings import Settings
-    from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import StudyInterrupted
 
     specs = _specimens(args)
     mus = parse_mu_grid(args.mu)
-    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
 
     if not (math.isfinite(args.mu_base) and MIN_FRICTION <= args.mu_base <= MAX_FRICTION):
         raise ArchdemInputError(f"--mu-base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {args.mu_base}")
@@ -101,10 +101,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
-    from dem.experiments.tilt.case import MAP_TILT_TOL
-    from specimens.catalogue import FULL_SCALE_SPANS
-
     mus = default_of(catalogue_map, "mus")
     p = sub.add_parser("map", help="friction-threshold map: DEM tilt lambda(mu), mode(mu) and mu* per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")

@@ -52,6 +52,7 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from analytic.search import midpoint, search, wide
+from dem.core.settings import MAX_FRICTION, MIN_FRICTION
 from dem.experiments.tilt.case import (
     DEM_CASE,
     MAP_PROTOCOL,
@@ -60,7 +61,8 @@ from dem.experiments.tilt.case import (
     make_case,
     scaled_protocol,
 )
-from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact
+from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact, discretise
+from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import REFERENCE_MU_BASE
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
@@ -83,8 +85,6 @@ def parse_mu_grid(text: str) -> list[float]:
 def check_mus(mus: Sequence[float]) -> list[float]:
     """Sorted, de-duplicated friction values rounded to 1e-9 (stable case keys), each within the
     simulator's range (``Settings``: MIN_FRICTION to MAX_FRICTION)."""
-    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
-
     out = sorted({round(float(m), 9) for m in mus})
     if not out:
         raise ArchdemInputError("the friction grid is empty")
@@ -96,8 +96,6 @@ def check_mus(mus: Sequence[float]) -> list[float]:
 
 def _specimen_list(specimens) -> list:
     """Specimen objects (``.id``, ``.arch``) from objects, ids, or a selection string."""
-    from specimens.catalogue import get_specimen, select_specimens
-
     if isinstance(specimens, str):
         return select_specimens(specimens)
     out = []
@@ -188,6 +186,7 @@ def _finite_or_none(x: float) -> float | None:
 
 def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) -> float | None:
     """Least joint friction at which the LP multiplier reaches ``lam_ns`` (module docstring)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
 
     def full(mu: float) -> bool:
@@ -206,11 +205,11 @@ def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequenc
     enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints).
     On ``piers`` the continuous one has hinges anywhere along ring and piers, and the two-bar ones
     (a ring on a rigid base) are NaN."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_continuous import continuous_collapse
     from analytic.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.limit_piers import continuous_on_piers
     from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
-    from specimens.blocks import discretise
 
     asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact, piers=piers)
     mu = np.asarray(sorted(set(float(m) for m in mus)), dtype=float)
@@ -330,6 +329,7 @@ class MapResult:
 
     def figures(self, out_dir: str | os.PathLike) -> list[Path]:
         """Write the map figures into ``out_dir`` (see :mod:`dem.experiments.friction_map.figure`); their paths."""
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.friction_map.figure import save_map_figures
 
         return save_map_figures(self, out_dir)
@@ -371,12 +371,12 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     settings of its joints (``dem.core.contact.study_joints``), merged into ``settings``.
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import load_study, run_study
 
     t0 = time.perf_counter()
     specs = _specimen_list(specimens)
     grid = parse_mu_grid(mus) if isinstance(mus, str) else check_mus(mus)
-    from dem.core.settings import MAX_FRICTION, MIN_FRICTION
 
     if not (isinstance(mu_base, (int, float)) and math.isfinite(mu_base) and MIN_FRICTION <= mu_base <= MAX_FRICTION):
         raise ArchdemInputError(f"mu_base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {mu_base!r}")
@@ -406,6 +406,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
 
     kinds: dict[str, dict[str, str]] = {s.id: {} for s in specs}  # specimen -> case key -> kind
     cases_of: dict[str, list[dict]] = {s.id: [] for s in specs}
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import case_key
 
     round_cases = []

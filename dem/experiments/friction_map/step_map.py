@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.experiments.friction_map.run import catalogue_map
 from specimens.constants import REFERENCE_MU_BASE
 
 QUICK_MAP = ("Sh02-Sd015", "Sh1-Sd025")  # quick map: the thin/round-ish and the thick/sharp end
@@ -21,8 +22,6 @@ def map_plan(ctx: CampaignContext) -> tuple[list, str, int]:
 # ------------------------------------------------------------------------------ friction map
 def step_map(ctx: CampaignContext, d: Path) -> dict:
     """Rocking/sliding friction threshold of every specimen (coarse grid when quick)."""
-    from dem.experiments.friction_map.run import catalogue_map
-
     specs, mus, refine = map_plan(ctx)
     res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, studies_dir(ctx) / "map.h5",
                         workers=ctx.workers, scheduler=ctx.scheduler, resume=(studies_dir(ctx) / "map.h5").exists(),

@@ -2,12 +2,13 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.figure import Figure
+
+from dem.experiments.shake.figure import _save
 
 
 def mode_shapes_figure(structure, res, n: int = 6, title: str = ""):
     """The first ``n`` modes: each body's outline moved by the mode, scaled to a tenth of the structure."""
-    from matplotlib.figure import Figure
-
     n = min(n, len(res.frequencies_hz))
     cols = min(3, n)
     rows = -(-n // cols)
@@ -39,6 +40,4 @@ def mode_shapes_figure(structure, res, n: int = 6, title: str = ""):
 
 
 def save_mode_shapes(structure, res, path, title: str = "") -> None:
-    from dem.experiments.shake.figure import _save
-
     _save(mode_shapes_figure(structure, res, title=title), path)

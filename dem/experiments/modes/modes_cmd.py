@@ -3,15 +3,23 @@ compliant joints, at rest under gravity (docs/physics/modes.md)."""
 from __future__ import annotations
 
 import argparse
+import math
 
+from analytic.modes import KS_OVER_KN, POISSON, SPRINGS, ks_over_kn, modes
 from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
     block_from_args,
+    default_of,
     discretisation_kwargs,
     figure_file,
     print_json,
 )
+from dem.core.contact import normal_stiffness
+from dem.core.model import from_assembly
+from dem.core.model import single_block as block_model
+from dem.core.settings import Settings
+from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.errors import ArchdemInputError
 
 #: Most modes a command prints or stores.
@@ -19,7 +27,7 @@ MAX_COUNT = 10_000
 
 
 def _structure(args: argparse.Namespace):
-    from specimens.blocks import DEFAULT_DENSITY, discretise
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from specimens.frame import single_block
 
     block = block_from_args(args)
@@ -33,13 +41,7 @@ def _structure(args: argparse.Namespace):
 
 def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None]:
     """``(kn, ks)`` given, or from ``--youngs`` and ``--poisson`` over the blocks' length (dem.core.contact)."""
-    import math
-
-    from analytic.modes import ks_over_kn
-    from dem.core.contact import normal_stiffness
-    from dem.core.model import from_assembly
-    from dem.core.model import single_block as block_model
-    from dem.core.settings import Settings
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from specimens.frame import Block
 
     if (args.kn is None) == (args.youngs is None):
@@ -57,8 +59,6 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
 
 
 def _run(args: argparse.Namespace) -> int:
-    from analytic.modes import modes
-
     if not (isinstance(args.count, int) and 1 <= args.count <= MAX_COUNT):
         raise ArchdemInputError(f"--count must be a whole number from 1 to {MAX_COUNT}, got {args.count!r}")
     if args.plot:
@@ -68,6 +68,7 @@ def _run(args: argparse.Namespace) -> int:
     res = modes(structure, kn, ks, springs=args.springs)
     out = {"id": label, **res.describe(args.count)}
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.modes.figure import save_mode_shapes
 
         save_mode_shapes(structure, res, args.plot, title=label)
@@ -84,10 +85,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.modes import KS_OVER_KN, POISSON, SPRINGS, modes
-    from dem.common.options import default_of
-    from specimens.blocks import discretise
-
     p = sub.add_parser("modes", help="natural frequencies and mode shapes on compliant joints",
                        description=__doc__.splitlines()[0])
     add_arch_arguments(p)

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.signal import find_peaks
 
 from dem.core.loads import Load
 from dem.core.model import Model
@@ -59,8 +60,6 @@ def _frequency(y: np.ndarray, dt: float) -> float:
 
 def _damping(y: np.ndarray, dt: float, f_hz: float) -> float:
     """Damping ratio from the decay of the signal's successive peaks (log-linear fit)."""
-    from scipy.signal import find_peaks
-
     y = y - y[len(y) // 2:].mean()
     pk, _ = find_peaks(y, distance=max(1, int(0.5 / (f_hz * dt))))
     pk = pk[y[pk] > 1e-3 * y[pk].max()] if len(pk) else pk

@@ -2,10 +2,17 @@
 (docs/physics/modes.md)."""
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
-from dem.common.joints import STUDY_JOINTS
+from analytic.modes import modes
 from dem.common.campaign import CampaignContext, write_csv
+from dem.common.joints import STUDY_JOINTS
+from dem.core.contact import normal_stiffness, study_joints
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.modes.figure import save_mode_shapes
+from specimens.blocks import discretise
 
 #: Frequencies listed per specimen in the table (all 3 per body are in the CSV's JSON column).
 MODES_LISTED = 6
@@ -14,14 +21,6 @@ MODES_LISTED = 6
 def step_modes(ctx: CampaignContext, d: Path) -> dict:
     """First natural frequencies of each specimen (its blocks on the campaign's compliant joints, else on its
     Table 5.1 joints), and the first mode shapes of one specimen per rise."""
-    import json
-
-    from analytic.modes import modes
-    from dem.core.contact import normal_stiffness, study_joints
-    from dem.core.model import from_assembly
-    from dem.core.settings import Settings
-    from dem.experiments.modes.figure import save_mode_shapes
-    from specimens.blocks import discretise
 
     rows, figures, drawn = [], [], set()
     for s in ctx.specimens:

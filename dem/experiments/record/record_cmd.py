@@ -5,14 +5,13 @@ import argparse
 
 import numpy as np
 
+from analytic.records import FORMATS, load_record
 from dem.common.options import print_json
+from specimens.constants import G
 
 
 def record_summary(path: str, fmt: str = "auto", units: str | None = None) -> dict:
     """Name, sampling, duration and PGA of a record file (SI units, PGA also in g)."""
-    from analytic.records import load_record
-    from specimens.constants import G
-
     rec = load_record(path, fmt, units)
     m = rec.motion
     k = int(np.argmax(np.abs(m.values)))
@@ -38,8 +37,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.records import FORMATS
-
     p = sub.add_parser("record", help="read an accelerogram (AT2, SMC, ESM, CSV) and print its summary",
                        description="Read a recorded accelerogram and print name, npts, dt, duration, PGA and units.")
     p.add_argument("file", help="record file")

@@ -9,12 +9,14 @@ mechanism: no record reaches ``d0*`` (nor collapses) and the mean peak is at mos
 """
 from __future__ import annotations
 
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
 from dem.core.settings import Settings
 from dem.experiments.shake.run import ShakeProtocol, shake
+from specimens.processes import pool_worker_init
 
 
 @dataclass(frozen=True)
@@ -51,9 +53,6 @@ def run_records(target, motions, e_star: float, settings: Settings | None = None
     jobs = [(target, m, settings or Settings(), protocol or ShakeProtocol(), e_star) for m in motions]
     if workers <= 1 or len(jobs) <= 1:
         return [_one(j) for j in jobs]
-    from concurrent.futures import ProcessPoolExecutor
-
-    from specimens.processes import pool_worker_init
 
     with ProcessPoolExecutor(min(workers, len(jobs)), initializer=pool_worker_init) as ex:
         return list(ex.map(_one, jobs))

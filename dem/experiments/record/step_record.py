@@ -7,8 +7,14 @@ from pathlib import Path
 
 import numpy as np
 
+from analytic.inputs import SampledMotion
+from analytic.records import baseline_correct, read_record, with_zero_tail
 from dem.common.campaign import CampaignContext, write_csv
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from dem.core.model import as_model
+from dem.core.settings import Settings
+from dem.experiments.shake.run import ShakeProtocol
+from dem.experiments.shake.thresholds import static_onset, threshold
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
 
 RECORD_FILE = "RSN6_IMPVALL.I_I-ELC180.AT2"  # El Centro 1940, the shared record set
 
@@ -36,9 +42,6 @@ class RecordAtPGA:
 
 def record_window(path: str, t_start: float, t_end: float):
     """The part ``[t_start, t_end]`` [s] of a record file, baseline-corrected, with a 1 s zero tail."""
-    from analytic.inputs import SampledMotion
-    from analytic.records import baseline_correct, read_record, with_zero_tail
-
     m = read_record(path)
     i0, i1 = int(round(t_start / m.dt)), int(round(t_end / m.dt)) + 1
     w = SampledMotion(m.values[i0:i1], m.dt, name=f"{m.name} [{t_start:g}, {t_end:g}] s", source=m.source)
@@ -52,13 +55,6 @@ def _record_path() -> Path:
 
 def step_record(ctx: CampaignContext, d: Path) -> dict:
     """One recorded accelerogram scaled until collapse, for three specimens (one when quick)."""
-    from analytic.records import read_record
-    from dem.core.model import as_model
-    from dem.core.settings import Settings
-    from dem.experiments.shake.run import ShakeProtocol
-    from dem.experiments.shake.thresholds import static_onset, threshold
-    from specimens.constants import G
-
     path = _record_path()
     full = read_record(path)
     t_pga = float(np.argmax(np.abs(full.values)) * full.dt)

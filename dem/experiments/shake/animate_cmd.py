@@ -4,19 +4,16 @@ from __future__ import annotations
 import argparse
 
 from dem.common.options import default_of
+from dem.experiments.shake.animation import animate
 
 
 def _run_animate(args: argparse.Namespace) -> int:
-    from dem.experiments.shake.animation import animate
-
     out = animate(args.run, args.out, fps=args.fps, max_frames=args.frames)
     print(out)
     return 0
 
 
 def register(sub) -> None:
-    from dem.experiments.shake.animation import animate
-
     r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")
     r.add_argument("run", help="run file (.h5) written by `archdem tilt` or `archdem shake`")
     r.add_argument("--out", required=True, help="FILE.gif or FILE.mp4 (never overwritten)")

@@ -14,12 +14,15 @@ from pathlib import Path
 
 import numpy as np
 
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
+from specimens.io import atomic_path, can_make_dir
 
 
 def read_run(path: str | Path) -> dict:
     """``model``, ``history`` (:class:`dem.core.simulate.History`), ``input_t``, ``input`` (values),
     ``input_label``, ``title`` of a tilt or shake run file."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     import h5py
 
     path = Path(path)
@@ -31,8 +34,8 @@ def read_run(path: str | Path) -> dict:
     except OSError:
         raise ArchdemInputError(f"{path}: not an HDF5 run file") from None
     if fmt == "archdem-shake-1":
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.shake.file import load_shake
-        from specimens.constants import G
 
         d = load_shake(path)
         s = d["summary"]
@@ -41,6 +44,7 @@ def read_run(path: str | Path) -> dict:
                 "title": f"{d['label']}: shake, PGA {s.get('pga_g', float('nan')):.3f} g, "
                          f"{'collapse' if s['collapsed'] else 'survival'}"}
     if fmt == "archdem-tilt-1":
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.tilt.file import load_result
 
         r = load_result(path)
@@ -66,10 +70,9 @@ def _outlines(model, pos: np.ndarray, R: np.ndarray) -> list[np.ndarray]:
 def animate(path: str | Path, out: str | Path, fps: int = 25, max_frames: int = 200, overwrite: bool = False) -> Path:
     """Write the animation of run file ``path`` to ``out`` (.gif or .mp4); returns ``out``."""
 
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from matplotlib import animation
     from matplotlib.figure import Figure
-
-    from specimens.io import atomic_path, can_make_dir
 
     out = Path(out)
     ext = out.suffix.lower()

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import argparse
 import math
+from dataclasses import replace
 
+from analytic.domain import failure_domain
 from dem.common.joints import contact_fraction
 from dem.common.options import (
     CONTACT_LAW_DESTS,
@@ -22,8 +24,10 @@ from dem.common.options import (
     writable_file,
 )
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
-from specimens.blocks import DEFAULT_DENSITY
+from dem.experiments.shake.step_shake import SHAKE_FREQS
+from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
 from specimens.io import MAX_GRID_POINTS
 
@@ -47,8 +51,12 @@ def restitution_option(text: str) -> float | None:
 
 def build_mechanism(args: argparse.Namespace):
     """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic import linkage
+
     density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
     if args.block is not None:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from analytic.rocking_block import RockingBlock
 
         if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
@@ -66,9 +74,6 @@ def build_mechanism(args: argparse.Namespace):
     model = args.model or "four-bar"
     if model == "block":
         raise ArchdemInputError("--model block needs --block B H")
-    from dataclasses import replace
-
-    from analytic import linkage
 
     piers = piers_from_args(args)
     if piers is not None or args.layout == "discrete":
@@ -94,8 +99,8 @@ def build_mechanism(args: argparse.Namespace):
 
 def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: float):
     """The four-bar of the discrete minimum mechanism (the only linkage of an arch on piers)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.linkage import mechanism_four_bar
-    from specimens.blocks import discretise
 
     if model != "four-bar":
         raise ArchdemInputError("an arch on piers rocks as the four-bar of its discrete mechanism; use --model four-bar")
@@ -130,7 +135,7 @@ def _run_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
     if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
         raise ArchdemInputError("--contact-law, --kn, --youngs, --damping-* and --joints are the DEM's joints (--engine dem)")
-    from analytic.domain import failure_domain
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.impact import post_impact
 
     rest = restitution_option(args.restitution)
@@ -156,6 +161,7 @@ def _run_domain(args: argparse.Namespace) -> int:
                          restitution=rest, workers=args.workers)
     e = post_impact(mech, rest).e_applied
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from analytic.figures_dynamics import plot_domain
 
         plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
@@ -176,10 +182,6 @@ def _run_domain(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.domain import failure_domain
-    from dem.experiments.shake.step_shake import SHAKE_FREQS
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-
     p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
                        description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
                                    "duration (pulses), all collapse/survival bands.")
@@ -215,8 +217,6 @@ def dem_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("--engine dem runs one-cycle sines only (--input sine0)")
     if getattr(args, "durations", None) is not None:
         raise ArchdemInputError("--engine dem takes --freq, not --durations")
-    from analytic.domain import failure_domain
-    from dem.experiments.shake.step_shake import SHAKE_FREQS
 
     freqs = parse_grid(args.freq) if args.freq is not None else list(SHAKE_FREQS)
     if args.plot:
@@ -232,6 +232,7 @@ def dem_domain(args: argparse.Namespace) -> int:
                              workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
                              scheduler=getattr(args, "scheduler", None), joints=law or None)
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.shake.figure import plot_domain_over_analytic
 
         density = getattr(args, "density", None) or DEFAULT_DENSITY

@@ -4,13 +4,14 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
 
+from dem.experiments.shake.run import motion_trace
 from specimens.constants import G
+from specimens.io import atomic_path
 
 
 def _save(fig, path: str | Path, overwrite: bool = False) -> Path:
-
-    from specimens.io import atomic_path
 
     path = Path(path)
     with atomic_path(path, overwrite=overwrite) as tmp:
@@ -23,8 +24,6 @@ def plot_shake_history(t_in: np.ndarray, a_in: np.ndarray, t: np.ndarray, crown_
                        t_rebound: float | None = None, title: str = ""):
     """Three panels over time: input ``a_g / g``; crown horizontal displacement [mm]; largest
     point displacement / size with the collapse level. Returns the figure."""
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(7, 6.5))
     ax = fig.subplots(3, 1, sharex=True)
     ax[0].plot(t_in, np.asarray(a_in) / G, "k", lw=1)
@@ -50,8 +49,6 @@ def plot_shake_history(t_in: np.ndarray, a_in: np.ndarray, t: np.ndarray, crown_
 
 def save_shake_figure(result, path: str | Path) -> Path:
     """Time-history figure of a :class:`dem.experiments.shake.run.ShakeResult`."""
-    from dem.experiments.shake.run import motion_trace
-
     t_in, a_in = motion_trace(result.motion, result.sim.duration, result.settings.dt)
     h = result.sim.history
     fig = plot_shake_history(t_in, a_in, h.t, result.crown_u, h.dmax, result.model.size,
@@ -65,8 +62,6 @@ def plot_domain_over_analytic(dem: dict, analytic: dict, path: str | Path, title
     """DEM failure domain (collapse bands shaded, thresholds as markers) over the analytic
     four-bar / two-bar thresholds (lines). ``dem``: dict of :func:`dem.experiments.shake.thresholds.failure_domain`;
     ``analytic``: name -> :class:`analytic.domain.FailureDomain`."""
-    from matplotlib.figure import Figure
-
     fig = Figure(figsize=(7, 5))
     ax = fig.subplots()
     xs = sorted({b["x"] for b in dem["bands"]})

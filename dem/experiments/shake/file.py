@@ -7,9 +7,9 @@ from pathlib import Path
 
 import h5py
 
+from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
 from dem.core.settings import Settings
 from dem.experiments.shake.run import FORMAT, ShakeResult, motion_trace
-from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path, to_json
 

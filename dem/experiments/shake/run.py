@@ -39,6 +39,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from analytic.inputs import GroundMotion
+from dem.core import detect
 from dem.core.loads import GroundShake
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
@@ -190,7 +191,7 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
     :func:`dem.core.model.as_model`); see the module docstring. ``friction_work=False`` skips the
     contact-force readout behind the friction work (NaN then)."""
     model = as_model(target, config=config)
-    from dem.core import detect
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 
     settings = settings or Settings()

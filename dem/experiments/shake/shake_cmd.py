@@ -6,6 +6,7 @@ import argparse
 import math
 import sys
 
+from analytic.records import ground_motion
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,
@@ -20,7 +21,12 @@ from dem.common.options import (
     print_json,
     writable_dir,
 )
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_SIMULATED_S, ShakeProtocol, shake
+from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
+from specimens.io import unique_run_path
 
 
 def _positive(name: str, v: float | None) -> None:
@@ -30,10 +36,6 @@ def _positive(name: str, v: float | None) -> None:
 
 def model_and_settings(args: argparse.Namespace):
     """``(label, arch, assembly, model, settings)`` of the options."""
-    from dem.core.model import from_assembly
-    from dem.core.settings import Settings
-    from specimens.blocks import discretise
-
     label, arch = arch_from_args(args)
     if args.id is None and args.Ri is None and args.Sh is None:
         raise ArchdemInputError("give a specimen id or the arch parameters")
@@ -63,17 +65,14 @@ def check_sine(args: argparse.Namespace) -> None:
 
 
 def _motion(args: argparse.Namespace):
-    from analytic.records import ground_motion
-
     check_sine(args)
     return ground_motion(sine=args.sine, amplitude=args.amplitude, record=args.record, units=args.units,
                          baseline=args.baseline, scale=args.scale, pga=args.pga)
 
 
 def _run_shake(args: argparse.Namespace) -> int:
-    from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, ShakeProtocol, shake
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.shake.file import save_shake
-    from specimens.io import unique_run_path
 
     motion = _motion(args)
     label, _, _, model, settings = model_and_settings(args)
@@ -90,6 +89,7 @@ def _run_shake(args: argparse.Namespace) -> int:
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
     path = save_shake(res, unique_run_path(writable_dir(args.out), stem))
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.shake.figure import save_shake_figure
 
         save_shake_figure(res, args.plot)
@@ -108,10 +108,6 @@ def _run_shake(args: argparse.Namespace) -> int:
 
 def add_shake_arguments(p: argparse.ArgumentParser) -> None:
     """The arch, its blocks, friction, engine, joints and the shake protocol's options."""
-    from dem.core.settings import Settings
-    from dem.experiments.shake.run import MAX_SIMULATED_S, ShakeProtocol
-    from specimens.blocks import discretise
-
     add_arch_arguments(p)
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
     add_friction_arguments(p)

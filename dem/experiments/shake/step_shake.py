@@ -6,7 +6,14 @@ from pathlib import Path
 
 import numpy as np
 
+from analytic.inputs import SinePulse
 from dem.common.campaign import CampaignContext, write_csv
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
+from dem.experiments.shake.run import shake
+from specimens.blocks import discretise
+from specimens.constants import G
 
 SHAKE_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # Hz, the reference study's pulses
 
@@ -33,8 +40,7 @@ def _lowest_threshold(domain) -> dict[float, float]:
 
 def step_shake(ctx: CampaignContext, d: Path) -> dict:
     """Shake-table thresholds (one-cycle sine) of the Sd = 0.15 and 0.20 specimens next to the four-bar."""
-    from dem.core.settings import Settings
-    from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.shake.figure import plot_domain_over_analytic
 
     specs, freqs = shake_plan(ctx)
@@ -87,13 +93,8 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
 
 def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list[dict]:
     """Time histories just below and at the first DEM threshold (lowest frequency that has one)."""
-    from analytic.inputs import SinePulse
-    from dem.core.model import from_assembly
-    from dem.core.settings import Settings
-    from dem.experiments.shake.run import shake
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.shake.figure import save_shake_figure
-    from specimens.blocks import discretise
-    from specimens.constants import G
 
     t = next((t for t in dem["thresholds"] if t["amplitude_g"] is not None), None)
     if t is None:

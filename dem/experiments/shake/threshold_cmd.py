@@ -6,6 +6,7 @@ import argparse
 import math
 
 from dem.common.options import default_of, print_json, workers_option
+from dem.experiments.shake.run import ShakeProtocol
 from dem.experiments.shake.shake_cmd import (
     MAX_AMPLITUDE_G,
     MAX_SINE_HZ,
@@ -13,13 +14,11 @@ from dem.experiments.shake.shake_cmd import (
     check_sine,
     model_and_settings,
 )
+from dem.experiments.shake.thresholds import SCAN_TOP, static_onset, threshold
 from specimens.errors import ArchdemInputError
 
 
 def _run_threshold(args: argparse.Namespace) -> int:
-    from dem.experiments.shake.run import ShakeProtocol
-    from dem.experiments.shake.thresholds import static_onset, threshold
-
     check_sine(args)
     label, arch, _, model, settings = model_and_settings(args)
     lam = static_onset(model, settings)
@@ -50,8 +49,6 @@ def _run_threshold(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from dem.experiments.shake.thresholds import SCAN_TOP, threshold
-
     q = sub.add_parser("threshold", help="least collapsing one-cycle sine amplitude (scan + bisection)",
                        description="Least collapsing amplitude of a one-cycle sine: amplitude scan, bisection of "
                                    "the lowest collapsing bracket, and every survival band above it.")

@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 import os
 import time
+from concurrent.futures import FIRST_COMPLETED, wait
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
@@ -123,6 +124,7 @@ def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
 def _map(fn, jobs: list, workers: int, scheduler: str | None = None) -> list:
     if not scheduler and (workers <= 1 or len(jobs) <= 1):
         return [fn(j) for j in jobs]
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import executor
 
     with executor(min(workers, len(jobs)), scheduler) as (ex, _):
@@ -153,8 +155,6 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, 
     chain while scan amplitudes remain (the thresholds of the campaign: 11 rounds of simulations
     become about 9 on two cores). Every run is the one the serial order would make, so the
     answer does not depend on the number of processes."""
-    from concurrent.futures import FIRST_COMPLETED, wait
-
     n = len(grid)
     scan: list[Outcome | None] = [None] * n
     bis: list[Outcome] = []
@@ -183,6 +183,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, 
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
         return result()
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import executor
 
     with executor(min(workers, n), scheduler) as (ex, workers):
@@ -233,6 +234,7 @@ def _bands(runs: Sequence[Outcome], first: float | None) -> tuple[dict, ...]:
 def static_onset(model: Model, settings: Settings) -> float:
     """Static collapse multiplier ``lambda`` of the model's blocks at the settings' frictions (the static
     LP, :func:`analytic.limit_discrete.solve_lp`): no pulse below ``lambda g`` moves the arch."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
 
     if model.assembly is None:

@@ -3,14 +3,13 @@ from __future__ import annotations
 
 import argparse
 
+from analytic.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, read_experiments
 from dem.common.options import print_json, writable_file
 from specimens.errors import ArchdemInputError
+from specimens.io import atomic_path, to_json
 
 
 def _run(args: argparse.Namespace) -> int:
-    from analytic.calibration import LAB_TILT_TESTS, calibrate, read_experiments
-    from specimens.io import atomic_path, to_json
-
     src = args.experiments or LAB_TILT_TESTS
     tests = read_experiments(src)  # first: a bad table leaves nothing behind, not even a folder
     out = writable_file(args.out)
@@ -36,8 +35,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    from analytic.calibration import CALIBRATION_FILE
-
     p = sub.add_parser("calibrate", help="fit the effective contact (edge loss of the joints) to laboratory tilt tests",
                        description=__doc__.splitlines()[0])
     p.add_argument("--experiments", default=None, metavar="FILE",

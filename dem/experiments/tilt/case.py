@@ -15,8 +15,14 @@ from pathlib import Path
 
 import numpy as np
 
+from dem.core import detect
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.tilt.run import TiltProtocol, TiltResult, hold_level, tilt
+from specimens.blocks import check_contact, discretise
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.piers import Piers
 
 RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
@@ -64,9 +70,6 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     below 1, so full-contact cases keep their keys); ``piers``: the arch stands on these
     :class:`~specimens.piers.Piers` (written only when given).
     """
-    from dem.experiments.tilt.run import TiltProtocol
-    from specimens.blocks import check_contact
-
     if config not in ("glued", "free"):
         raise ArchdemInputError(f"configuration must be 'glued' or 'free', got {config!r}")
     for nm, v in (("mu_joint", mu_joint), ("mu_base", mu_base)):
@@ -88,8 +91,6 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
 
 
 def scaled_protocol(d: dict, s: float):
-    from dem.experiments.tilt.run import TiltProtocol
-
     names = {f.name for f in fields(TiltProtocol)}
     unknown = set(d) - names
     if unknown:
@@ -98,8 +99,6 @@ def scaled_protocol(d: dict, s: float):
 
 
 def scaled_settings(case: dict):
-    from dem.core.settings import Settings
-
     s = float(case.get("time_scale", 1.0))
     base = Settings()
     kw = dict(case.get("settings") or {})
@@ -110,10 +109,6 @@ def scaled_settings(case: dict):
 
 def _case_setup(case: dict):
     """Assembly, model, settings and protocol of a DEM tilt case."""
-    from dem.core.model import from_assembly
-    from specimens.blocks import discretise
-    from specimens.piers import Piers
-
     asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"],
                      contact=float(case.get("contact", 1.0)),
                      bands={k: tuple(v) for k, v in case["bands"].items()} if case.get("bands") else None,
@@ -131,8 +126,6 @@ def tilt_case(case: dict) -> dict:
     ``friction_work_J``, ``levels`` (n, 2: lambda, collapsed) and the joint states at collapse
     (``joint_names``, ``joint_states``, ``joint_faces``, ``joint_opening`` [m], ``joint_slip`` [m]).
     """
-    from dem.experiments.tilt.run import tilt
-
     asm, model, settings, proto = _case_setup(case)
     res = tilt(model, settings, proto, label=case["label"], assembly=asm)
     joints = [j.to_dict() if hasattr(j, "to_dict") else dict(j) for j in res.joints]
@@ -155,9 +148,8 @@ def replay_tilt(case: dict, results: dict):
     stored ``results`` are given, with the time history of its collapse: the collapsing level
     (upper end of the bracket) is simulated again. The engines are deterministic for identical
     command sequences, so this is the simulation the case ran (one simulation, not a tilt test)."""
-    from dem.core import detect
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
-    from dem.experiments.tilt.run import TiltResult, hold_level
 
     _, model, settings, proto = _case_setup(case)
     if proto.kind != "hold":

@@ -63,6 +63,7 @@ def prevents_sliding(mu_joint: float, mu_base: float) -> bool:
 
 def reference_lp(assembly, mu_joint: float, mu_base: float):
     """The LP a tilt test at these frictions is checked against (module docstring)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
 
     if prevents_sliding(mu_joint, mu_base):

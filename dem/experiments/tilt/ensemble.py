@@ -11,11 +11,15 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from dem.experiments.tilt.case import DEM_CASE, make_case
+from dem.studies.sweep import case_key, run_study
+from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
 
 #: The tilt protocol of every realisation (the campaign's tilt test: LP start, 0.5 %).
@@ -62,11 +66,6 @@ def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: s
     """``n`` tilt tests of ``arch`` (``n_voussoirs`` per side) with the joints of realisations
     ``0..n-1`` of ``seed`` (``law``: their contact-law settings, ``dem.core.contact.study_joints``; rigid
     by default); the study is stored in ``out_path``."""
-    import time
-
-    from dem.experiments.tilt.case import DEM_CASE, make_case
-    from dem.studies.sweep import case_key, run_study
-    from specimens.blocks import discretise
 
     if not (isinstance(n, int) and 1 <= n <= 10_000):
         raise ArchdemInputError(f"an ensemble has 1 to 10000 realisations, got {n!r}")

@@ -5,6 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
+
+from specimens.io import atomic_path
 
 STATE_COLOURS = {"closed": "0.6", "hinge": "tab:red", "slide": "tab:blue", "hinge+slide": "tab:purple", "open": "tab:orange"}
 
@@ -20,8 +24,6 @@ def _frame_at_collapse(result):
 def plot_collapse(result, ax=None, magnify: float | None = None):
     """Draw the initial outline (grey) and the deformed outline at the end of the mode window,
     displacements magnified so the largest is ~ one ring thickness; joints coloured by state."""
-    from matplotlib.figure import Figure
-
     if ax is None:
         ax = Figure(figsize=(7, 5)).subplots()
     m = result.model
@@ -54,14 +56,11 @@ def plot_collapse(result, ax=None, magnify: float | None = None):
 
 def plot_bracket(result, ax=None):
     """Levels tried in order: collapsing (red x) and stable (green o), and the final bracket."""
-    from matplotlib.figure import Figure
-
     if ax is None:
         ax = Figure(figsize=(5, 4)).subplots()
     for k, (lam, col) in enumerate(result.levels, start=1):
         ax.plot(k, lam, "x" if col else "o", color="tab:red" if col else "tab:green")
     ax.axhspan(*result.bracket, color="0.9")
-    from matplotlib.ticker import MaxNLocator
 
     ax.xaxis.set_major_locator(MaxNLocator(integer=True))  # simulations are counted
     ax.set_xlabel("simulation")
@@ -72,10 +71,6 @@ def plot_bracket(result, ax=None):
 
 def save_tilt_figure(result, path: str | Path) -> Path:
     """Both panels in one file (png/pdf/svg), written atomically."""
-
-    from matplotlib.figure import Figure
-
-    from specimens.io import atomic_path
 
     path = Path(path)
     fig = Figure(figsize=(12, 4.8))

@@ -15,10 +15,11 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
 from dem.core.detect import JointState
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, TiltResult
-from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
+from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path, to_json
 
 FORMAT = "archdem-tilt-1"
@@ -51,8 +52,6 @@ def load_result(path: str | Path) -> TiltResult:
     """Read a tilt result written by :func:`save_result`."""
     with h5py.File(path, "r") as f:
         if f.attrs.get("format") != FORMAT:
-            from specimens.errors import ArchdemInputError
-
             raise ArchdemInputError(f"{path} is not an archdem tilt result")
         model = read_model(f["model"])
         sims = {n: (read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}

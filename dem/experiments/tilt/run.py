@@ -153,6 +153,7 @@ class TiltResult:
 def lp_guess(assembly, settings: Settings) -> float | None:
     """First estimate of the tilt lambda of ``assembly`` (a :mod:`specimens.blocks` assembly):
     the static LP of the same blocks at the settings' frictions, or None if it has none."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit_discrete import solve_lp
 
     try:
@@ -253,6 +254,7 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
         lam = proto.rate * t_on
         levels.append((lam, True))
         collapse, bracket = r, (proto.rate * max(t_on - settings.record_every, 0.0), lam)
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 
     return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),

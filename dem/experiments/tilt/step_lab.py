@@ -2,10 +2,18 @@
 laboratory tilt tests (docs/physics/geometry.md#13-imperfect-fit)."""
 from __future__ import annotations
 
+import csv
 import math
+from collections import Counter
 from pathlib import Path
 
+import numpy as np
+from matplotlib.figure import Figure
+
+from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.experiments.tilt.ensemble import tilt_ensemble
+from specimens.imperfection import Imperfection
 
 #: Seed of the campaign's realisations (each specimen's ensemble is realisations 0..n-1 of it).
 LAB_SEED = 1
@@ -15,8 +23,6 @@ def lab_plan(ctx: CampaignContext) -> tuple[list, list, int]:
     """(specimens with laboratory tests, specimens without, realisations per tested specimen):
     three realisations like the laboratory's three tests when quick, ten in the full campaign;
     a specimen without tests gets the nominal imperfect blocks once (a prediction)."""
-    from analytic.calibration import LAB_TILT_TESTS, read_experiments
-
     tested = {t.id for t in read_experiments(LAB_TILT_TESTS)}
     return ([s for s in ctx.specimens if s.id in tested], [s for s in ctx.specimens if s.id not in tested],
             3 if ctx.quick else 10)
@@ -24,8 +30,6 @@ def lab_plan(ctx: CampaignContext) -> tuple[list, list, int]:
 
 def _tilt_reference(ctx: CampaignContext) -> dict[str, float]:
     """DEM tilt lambda at the reference friction and full contact, from the tilt step if it ran."""
-    import csv
-
     p = ctx.out / "tilt" / "tilt.csv"
     if not p.is_file():
         return {}
@@ -36,14 +40,6 @@ def _tilt_reference(ctx: CampaignContext) -> dict[str, float]:
 def step_lab(ctx: CampaignContext, d: Path) -> dict:
     """Per specimen: laboratory mean ± sd, ideal and effective LP, DEM ideal and DEM effective
     (ensemble mean ± sd of imperfect realisations), observed and simulated modes."""
-    from collections import Counter
-
-    import numpy as np
-    from matplotlib.figure import Figure
-
-    from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
-    from dem.experiments.tilt.ensemble import tilt_ensemble
-    from specimens.imperfection import Imperfection
 
     cal = load_calibration()
     lab = {t.id: t for t in read_experiments(LAB_TILT_TESTS)}

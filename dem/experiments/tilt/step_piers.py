@@ -5,8 +5,15 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from matplotlib.figure import Figure
+
+from analytic.limit_discrete import solve_lp
 from dem.common.campaign import CampaignContext, pct, studies_dir, write_csv
+from dem.experiments.tilt.case import DEM_CASE, make_case
+from dem.studies.sweep import case_key, run_study
+from specimens.blocks import discretise
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.piers import Piers
 
 #: Pier heights of the study, as multiples of the arch's rise (0: the bare arch on the rigid base).
 PIER_HEIGHTS_QUICK = (0.0, 1.0, 1.5, 2.0)
@@ -27,20 +34,12 @@ def piers_plan(ctx: CampaignContext) -> tuple:
 
 
 def _piers(spec, height: float):
-    from specimens.piers import Piers
-
     return None if height == 0 else Piers(height, PIER_WIDTH_T * spec.arch.t, courses=PIER_COURSES)
 
 
 def step_piers(ctx: CampaignContext, d: Path) -> dict:
     """Per pier height: the LP (no sliding and reference friction) with its hinges, and the DEM tilt
     lambda with no sliding and its hinges."""
-    from matplotlib.figure import Figure
-
-    from analytic.limit_discrete import solve_lp
-    from dem.experiments.tilt.case import DEM_CASE, make_case
-    from dem.studies.sweep import case_key, run_study
-    from specimens.blocks import discretise
 
     spec, heights = piers_plan(ctx)
     contact = ctx.contact_of(spec)

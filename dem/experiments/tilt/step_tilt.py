@@ -7,6 +7,11 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.experiments.tilt.case import DEM_CASE, make_case, replay_tilt
+from dem.experiments.tilt.check import check, reference_lp
+from dem.experiments.tilt.figure import save_tilt_figure
+from dem.studies.sweep import case_key, run_study
+from specimens.blocks import discretise
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
 
@@ -21,11 +26,6 @@ def tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
 # ------------------------------------------------------------------------------------ tilt
 def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     """Tilt test of every specimen at the reference friction and with no sliding, beside the LP."""
-    from dem.experiments.tilt.check import check, reference_lp
-    from dem.experiments.tilt.case import DEM_CASE, make_case
-    from dem.studies.sweep import case_key, run_study
-    from specimens.blocks import discretise
-
     frictions = tilt_frictions(ctx)
     eng = {"engine": ctx.engine} if ctx.engine != "pybullet" else None
     # the tilt test's own protocol (LP start, 0.5 %), quick or not: 3 simulations per test
@@ -129,9 +129,6 @@ def _collapse_figures(rows: list[dict], records: dict, cases: dict, d: Path) -> 
     """The arch at collapse (joints coloured by state) and the lambda bracket history of the first
     specimen that rocks and the first that slides at the reference friction; the collapsing
     simulation is replayed from the study (:func:`dem.experiments.tilt.case.replay_tilt`)."""
-    from dem.experiments.tilt.figure import save_tilt_figure
-    from dem.experiments.tilt.case import replay_tilt
-
     picks = []
     for modes in (("rocking",), ("sliding", "mixed")):
         row = next((r for r in rows if r["mode_reference"] in modes), None)

@@ -19,16 +19,17 @@ from dem.common.options import (
     workers_option,
     writable_dir,
 )
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.tilt.run import TiltProtocol, tilt
+from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
+from specimens.io import unique_run_path
 
 
 def _run(args: argparse.Namespace) -> int:
-    from dem.core.model import from_assembly
-    from dem.core.settings import Settings
-    from dem.experiments.tilt.run import TiltProtocol, tilt
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.tilt.file import save_result
-    from specimens.blocks import discretise
-    from specimens.io import unique_run_path
 
     label, arch = arch_from_args(args)
     if args.id is None and args.Ri is None and args.Sh is None:
@@ -57,6 +58,7 @@ def _run(args: argparse.Namespace) -> int:
                label=label, assembly=asm)
     path = save_result(res, unique_run_path(writable_dir(args.out), f"tilt-{label}-{args.config}"))
     if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.tilt.figure import save_tilt_figure
 
         save_tilt_figure(res, args.plot)
@@ -73,8 +75,8 @@ def _run(args: argparse.Namespace) -> int:
 
 def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
     """``archdem tilt ID --ensemble N --seed S [--contact C|calibrated] [--scatter MM]``."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.tilt.ensemble import tilt_ensemble
-    from specimens.io import unique_run_path
 
     if args.protocol != "hold" or args.start != "auto" or args.full_hold or args.planar or args.dt is not None:
         raise ArchdemInputError("an ensemble runs the default hold protocol: drop --protocol/--start/--full-hold/--planar/--dt")
@@ -106,10 +108,6 @@ def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
 
 
 def register(sub) -> None:
-    from dem.core.settings import Settings
-    from dem.experiments.tilt.run import TiltProtocol
-    from specimens.blocks import discretise
-
     p = sub.add_parser("tilt", help="virtual tilt test (collapse multiplier lambda = tan theta and failure mode)")
     add_arch_arguments(p)
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))

@@ -3,9 +3,9 @@ from pathlib import Path
 
 import pytest
 
-from dem.common.campaign import CampaignContext
 from dem.campaign.estimate import estimate
 from dem.campaign.runner import all_steps
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 

@@ -9,6 +9,7 @@ import html
 import json
 import math
 import re
+import sys
 from pathlib import Path
 
 import h5py
@@ -17,8 +18,8 @@ import pytest
 
 from analytic.inputs import SinePulse
 from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from dem.common.campaign import CampaignContext
 from dem.campaign.runner import STEPS, default_steps, run_campaign
+from dem.common.campaign import CampaignContext
 from dem.experiments.friction_map.step_map import map_plan
 from dem.experiments.record.step_record import record_plan
 from dem.experiments.shake.step_shake import shake_plan
@@ -43,13 +44,23 @@ SCAN_RATIO = 1.15  # largest ratio of neighbouring shake scan amplitudes (dem_fa
 
 
 # ----------------------------------------------------------------------------- stand-ins
+def _everywhere(mp: pytest.MonkeyPatch, module, name: str, value) -> None:
+    """Patch ``module.name`` and every project module that imported that object by name."""
+    old = getattr(module, name)
+    for m in list(sys.modules.values()):
+        if m is not module and getattr(m, "__name__", "").startswith(("dem.", "analytic.", "specimens.")) \
+                and getattr(m, name, None) is old:
+            mp.setattr(m, name, value)
+    mp.setattr(module, name, value)
+
+
 class StandIns:
     """Monkeypatches of the seams the steps simulate through, and what they were asked."""
 
     def __init__(self, mp: pytest.MonkeyPatch, specimens: list, ctx: CampaignContext):
         import analytic.figures_limit as figures_limit
-        import dem.experiments.shake.domain as domain
         import dem.experiments.friction_map.run as friction_map
+        import dem.experiments.shake.domain as domain
         import dem.experiments.shake.run as shake
         import dem.experiments.shake.thresholds as thresholds
         import dem.experiments.tilt.case as cases
@@ -58,9 +69,9 @@ class StandIns:
         self.runs: list[tuple[str, str, float, float, object]] = []  # (id, kind, freq, pga [g], settings)
         # the catalogue-wide work (the catalogue table, the analytic step's series and figures) on
         # the selected specimens only, and no full-scale figures
-        mp.setattr(catalogue, "CATALOGUE", tuple(specimens))
+        _everywhere(mp, catalogue, "CATALOGUE", tuple(specimens))
         real_figs = figures_limit.catalogue_figures
-        mp.setattr(figures_limit, "catalogue_figures", lambda out, full_scale=True, rows=None: real_figs(out, False, rows))
+        _everywhere(mp, figures_limit, "catalogue_figures", lambda out, full_scale=True, rows=None: real_figs(out, False, rows))
         # tilt step: the closed-form case function, told each test's lambda and mode
         real_make = cases.make_case
 
@@ -72,8 +83,8 @@ class StandIns:
                               else {"mu_star": mu_joint / 2, "lam_rock": lam})
             return c
 
-        mp.setattr(cases, "DEM_CASE", cases.SYNTHETIC_CASE)
-        mp.setattr(cases, "make_case", tilt_make_case)
+        _everywhere(mp, cases, "DEM_CASE", cases.SYNTHETIC_CASE)
+        _everywhere(mp, cases, "make_case", tilt_make_case)
         # the collapse figures replay a short real simulation (0.05 s) at the stand-in's lambda
         real_replay = cases.replay_tilt
 
@@ -83,7 +94,7 @@ class StandIns:
             return real_replay({**case, "protocol": proto},
                                {**results, "bracket": [lam / 1.005, lam], "levels": [[lam / 1.005, 0.0], [lam, 1.0]]})
 
-        mp.setattr(cases, "replay_tilt", short_replay)
+        _everywhere(mp, cases, "replay_tilt", short_replay)
         # map step: the same case function, each specimen with its own mu*
         real_map = friction_map.catalogue_map
 
@@ -92,8 +103,8 @@ class StandIns:
             c["synthetic"] = {"mu_star": MAP_MU_STAR[label], "lam_rock": MAP_LAM_ROCK}
             return c
 
-        mp.setattr(friction_map, "make_case", map_make_case)
-        mp.setattr(friction_map, "catalogue_map", lambda *a, **kw: real_map(*a, **{**kw, "func": cases.SYNTHETIC_CASE}))
+        _everywhere(mp, friction_map, "make_case", map_make_case)
+        _everywhere(mp, friction_map, "catalogue_map", lambda *a, **kw: real_map(*a, **{**kw, "func": cases.SYNTHETIC_CASE}))
         # shake step: the real four-bar domain, computed once here for the stand-in's truth
         (spec,), freqs = shake_plan(ctx)
         self.shake_id, self.freqs = spec.id, tuple(freqs)
@@ -106,7 +117,7 @@ class StandIns:
             assert arch == spec.arch and tuple(fs) == self.freqs
             return self.analytic
 
-        mp.setattr(domain, "analytic_domains", known_domains)
+        _everywhere(mp, domain, "analytic_domains", known_domains)
         self.record_id = record_plan(ctx)[0].id
         self.lam_static = {s.id: solve_lp(discretise(s.arch, config="glued"), REFERENCE_MU_JOINT, REFERENCE_MU_BASE).lam
                            for s in specimens}
@@ -123,10 +134,10 @@ class StandIns:
             hit = a >= RECORD_FACTOR * self.lam_static[model.name]
             return hit, ("rocking" if hit else "none"), ("after-first-rebound" if hit else None)
 
-        mp.setattr(thresholds, "collapses", collapses)
+        _everywhere(mp, thresholds, "collapses", collapses)
         # the time histories beside the shake thresholds: short real runs (0.05 s)
         real_shake = shake.shake
-        mp.setattr(shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
+        _everywhere(mp, shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
                    real_shake(model, motion, settings, shake.ShakeProtocol(duration=0.05), **kw))
 
 

@@ -24,14 +24,14 @@ def _lib():
     from dem.common.campaign import CampaignContext
     from dem.core.settings import Settings
     from dem.experiments.compare_engines.run import compare
-    from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.fragility.run import DEFAULT_FRICTION_COV
     from dem.experiments.friction_map.run import catalogue_map
+    from dem.experiments.shake.animation import animate
+    from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.shake.run import ShakeProtocol
     from dem.experiments.shake.thresholds import threshold
-    from dem.experiments.tilt.run import TiltProtocol
-    from dem.experiments.shake.animation import animate
     from dem.experiments.tilt.case import MAP_TILT_TOL
+    from dem.experiments.tilt.run import TiltProtocol
     from specimens.blocks import discretise
 
     s, sp, tp = Settings(), ShakeProtocol(), TiltProtocol()
@@ -122,13 +122,13 @@ def test_no_default_without_a_library_source(cmd):
 
 def test_help_texts_show_the_library_values():
     from analytic.domain import failure_domain
-    from dem.experiments.shake.step_shake import SHAKE_FREQS
     from dem.core.settings import Settings
     from dem.experiments.compare_engines.run import FRICTIONS
+    from dem.experiments.shake.animation import animate
     from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.shake.run import ShakeProtocol
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
     from dem.experiments.tilt.run import TiltProtocol
-    from dem.experiments.shake.animation import animate
     from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
     from specimens.catalogue import SPECIMEN_WIDTH
     from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
@@ -172,9 +172,9 @@ def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     # `archdem domain --engine dem`: the analytic --amax default means the DEM's own a_max_ratio,
     # the frequencies default to the campaign's shake frequencies
     import dem.experiments.shake.domain_cmd as dd
-    from dem.experiments.shake.step_shake import SHAKE_FREQS
     from dem.cli import main
     from dem.experiments.shake.domain import dem_failure_domain
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
     from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     seen = {}

@@ -1,8 +1,8 @@
 """The campaign's assessment step: the Noh Gumbad vaults, unreinforced and with FRP strips."""
 import csv
 
-from dem.common.campaign import CampaignContext
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 

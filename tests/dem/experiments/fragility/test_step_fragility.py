@@ -1,8 +1,8 @@
 """The campaign's fragility section, run for real (quick: one specimen at 2 Hz, 5 realisations per stripe)."""
 import csv
 
-from dem.common.campaign import CampaignContext
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from dem.experiments.friction_map import map_cmd
 from dem.experiments.friction_map import run as fm
 from dem.experiments.tilt import case as cases
 from dem.studies.sweep import StudyInterrupted
@@ -231,6 +232,7 @@ def test_cli_json_schema(tmp_path, capsys, monkeypatch):
         return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
 
     monkeypatch.setattr(fm, "catalogue_map", fake)
+    monkeypatch.setattr(map_cmd, "catalogue_map", fake)  # the command imported it by name
     code, out, err = _cli(["map", "--specimens", "Sh06-Sd015,Sh1-Sd010", "--mu", "0.3:0.9:0.2", "--workers", "1",
                            "--refine", "2", "--out", str(tmp_path / "s.h5"), "--json", "--plot", str(tmp_path / "p")],
                           capsys)
@@ -328,6 +330,7 @@ def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
         return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
 
     monkeypatch.setattr(fm, "catalogue_map", fake)
+    monkeypatch.setattr(map_cmd, "catalogue_map", fake)  # the command imported it by name
     piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
     code, out, err = _cli(["map", "--specimens", "Sh06-Sd015", "--mu", "0.3:0.9:0.2", "--workers", "1", "--refine", "0",
                            "--out", str(tmp_path / "s.h5"), "--json", *piers], capsys)

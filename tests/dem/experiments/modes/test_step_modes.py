@@ -5,8 +5,8 @@ import json
 import pytest
 
 from analytic.modes import modes
-from dem.common.campaign import CampaignContext
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from specimens import get_specimen
 from specimens.blocks import discretise
 from specimens.catalogue import STUDY_JOINTS

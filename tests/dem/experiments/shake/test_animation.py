@@ -7,9 +7,9 @@ import pytest
 from analytic.inputs import SinePulse
 from dem.core.model import single_block
 from dem.core.settings import Settings
-from dem.experiments.shake.run import ShakeProtocol, shake
-from dem.experiments.shake.file import save_shake
 from dem.experiments.shake.animation import animate, read_run
+from dem.experiments.shake.file import save_shake
+from dem.experiments.shake.run import ShakeProtocol, shake
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
@@ -36,8 +36,8 @@ def test_gif_of_shake_run(shake_file, tmp_path):
 
 
 def test_gif_of_tilt_run(tmp_path):
-    from dem.experiments.tilt.run import TiltProtocol, tilt
     from dem.experiments.tilt.file import save_result
+    from dem.experiments.tilt.run import TiltProtocol, tilt
 
     r = tilt(single_block(0.1, 0.4), Settings(mu_joint=10, mu_base=10, planar=True),
              TiltProtocol(kind="ramp", rate=0.5, lam_max=1.0))

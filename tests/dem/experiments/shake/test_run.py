@@ -8,8 +8,8 @@ import pytest
 from analytic.inputs import PulseA, SinePulse
 from dem.core.model import single_block
 from dem.core.settings import Settings
-from dem.experiments.shake.run import ShakeProtocol, first_rebound, shake
 from dem.experiments.shake.file import load_shake, save_shake
+from dem.experiments.shake.run import ShakeProtocol, first_rebound, shake
 from specimens.constants import NO_SLIDING_MU, G
 from specimens.errors import ArchdemInputError
 

@@ -81,9 +81,9 @@ def test_python_call_gives_the_cli_answer(tmp_path, capsys):
 
 def test_shake_record(tmp_path, capsys, monkeypatch):
     """A record run; one longer than ANNOUNCE_SIMULATED_S (lowered here) states its length first."""
-    import dem.experiments.shake.run as shake_module
+    import dem.experiments.shake.shake_cmd as shake_cmd
 
-    monkeypatch.setattr(shake_module, "ANNOUNCE_SIMULATED_S", 0.4)
+    monkeypatch.setattr(shake_cmd, "ANNOUNCE_SIMULATED_S", 0.4)
     rec = DATA / "RSN77_SFERN_PUL164.AT2"
     rc = main(["shake", *SMALL, "--record", str(rec), "--pga", "0.2", "--duration", "0.5", "--json",
                "--out", str(tmp_path)])

@@ -8,9 +8,9 @@ import pytest
 from analytic.elastic_tilt import elastic_tilt
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
-from dem.experiments.tilt.run import TiltProtocol, tilt
 from dem.experiments.tilt.check import check_result
 from dem.experiments.tilt.file import load_result, save_result
+from dem.experiments.tilt.run import TiltProtocol, tilt
 from specimens import get_specimen
 from specimens.blocks import discretise
 from specimens.catalogue import STUDY_JOINTS

@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 
+from dem.experiments.tilt import ensemble
 from dem.experiments.tilt.ensemble import EnsembleResult, tilt_ensemble
 from specimens.catalogue import get_specimen
 from specimens.errors import ArchdemInputError
@@ -34,10 +35,9 @@ def band_case(case: dict) -> dict:
 
 
 def test_every_realisation_is_a_case_with_its_seed_and_bands(tmp_path, monkeypatch):
-    import dem.experiments.tilt.case as cases
     from specimens.blocks import discretise
 
-    monkeypatch.setattr(cases, "DEM_CASE", band_case)
+    monkeypatch.setattr(ensemble, "DEM_CASE", band_case)
     imp = Imperfection(0.005, 0.001)
     r = tilt_ensemble("Sh06-Sd020", ARCH, imp, 3, 42, tmp_path / "e.h5", workers=1, progress=False)
     nominal = discretise(ARCH, config="glued", contact=imp.contact(ARCH))

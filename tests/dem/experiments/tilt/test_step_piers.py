@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from dem.common.campaign import CampaignContext
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from dem.experiments.tilt.step_piers import PIER_HEIGHTS_QUICK
 from specimens.catalogue import select_specimens
 
