@@ -15,7 +15,7 @@ import sys
 from importlib.metadata import version
 
 from dem.campaign import campaign_cmd
-from dem.cli import analytic_cmd, rock_cmd, specimens_cmd
+from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
 from dem.experiments.assessment import assess_cmd
 from dem.experiments.compare_engines import compare_engines_cmd
 from dem.experiments.fragility import fragility_cmd
@@ -30,6 +30,8 @@ from specimens.errors import ArchdemInputError
 # experiment (docs/architecture.md).
 _COMMANDS = [
     specimens_cmd,
+    mesh_cmd,
+    draw_cmd,
     analytic_cmd,
     assess_cmd,
     calibrate_cmd,
