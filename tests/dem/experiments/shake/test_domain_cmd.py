@@ -1,4 +1,4 @@
-"""``archdem domain`` and ``archdem rock`` (dem/experiments/shake/domain_cmd.py)."""
+"""``archdem domain`` (dem/experiments/shake/domain_cmd.py) and ``archdem rock`` (dem/cli/rock_cmd.py)."""
 from __future__ import annotations
 
 import json
