@@ -19,7 +19,7 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from analytic.inputs import SinePulse
+    from analytic.motions.inputs import SinePulse
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.shake.run import ShakeProtocol, shake

@@ -37,7 +37,7 @@ def one(job: tuple[str, str, float]) -> dict:
 
 
 def main() -> None:
-    from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
+    from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
     from dem.experiments.tilt.ensemble import tilt_ensemble
     from specimens.catalogue import CATALOGUE
     from specimens.imperfection import Imperfection

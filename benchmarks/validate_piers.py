@@ -26,7 +26,7 @@ B, H = 0.05, 0.2
 
 def tilt_job(job: tuple[str, float]) -> dict:
     engine, k = job
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
     from dem.experiments.tilt.run import tilt
@@ -46,9 +46,9 @@ def tilt_job(job: tuple[str, float]) -> dict:
 
 def frame_job(job: tuple[str, float, float]) -> dict:
     engine, beam_density, freq = job
-    from analytic.domain import domain_column
-    from analytic.inputs import SinePulse
-    from analytic.rocking_block import rocking_frame_equivalent
+    from analytic.motions.inputs import SinePulse
+    from analytic.rocking.domain import domain_column
+    from analytic.rocking.rocking_block import rocking_frame_equivalent
     from dem.core.model import frame_model
     from dem.core.settings import Settings
     from dem.experiments.shake.run import ShakeProtocol, shake

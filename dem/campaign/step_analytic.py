@@ -5,10 +5,10 @@ from pathlib import Path
 
 import numpy as np
 
-from analytic.figures_limit import catalogue_figures
-from analytic.limit_continuous import continuous_collapse
-from analytic.limit_discrete import enumerate_mechanisms
-from analytic.summary import analyse, multiplier_series
+from analytic.limit.figures import catalogue_figures
+from analytic.limit.limit_continuous import continuous_collapse
+from analytic.limit.limit_discrete import enumerate_mechanisms
+from analytic.limit.summary import analyse, multiplier_series
 from dem.common.campaign import CampaignContext, pct, write_csv
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE

@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.summary import analyse
+from analytic.limit.summary import analyse
 from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
@@ -49,7 +49,7 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
 def run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from analytic.figures_limit import catalogue_figures
+        from analytic.limit.figures import catalogue_figures
 
         out = writable_dir(args.plot)
         files = catalogue_figures(out)

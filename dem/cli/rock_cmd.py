@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.domain import make_input
-from analytic.records import read_record
+from analytic.motions.records import read_record
+from analytic.rocking.domain import make_input
 from dem.common.options import print_json, writable_file
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
 from specimens.constants import G
@@ -15,7 +15,7 @@ from specimens.errors import ArchdemInputError
 
 def _run_rock(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.dynamics import simulate
+    from analytic.rocking.dynamics import simulate
 
     rest = restitution_option(args.restitution)
     if args.record is not None:
@@ -46,7 +46,7 @@ def _run_rock(args: argparse.Namespace) -> int:
     r = simulate(mech, motion, restitution=rest, record=True)
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from analytic.figures_dynamics import plot_response
+        from analytic.rocking.figures import plot_response
 
         plot_response(r, args.plot, title=f"{label}: {what}", input_end=motion.duration)
     out = {"model": mech.summary(), "input": motion.describe(), **r.summary()}

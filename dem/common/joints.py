@@ -2,14 +2,14 @@
 
 Two settings of a joint have names besides numbers: its **contact fraction** (the central fraction of
 its depth that touches, :func:`specimens.blocks.discretise`'s ``contact``), a number in (0, 1] or
-``"calibrated"`` (the edge loss fitted to the laboratory tilt tests, :mod:`analytic.calibration`);
+``"calibrated"`` (the edge loss fitted to the laboratory tilt tests, :mod:`analytic.limit.calibration`);
 and its **joint law** (the :class:`~dem.core.settings.Settings` fields of the contact law), rigid
 (``{}``), the compliant law's fields, or ``"table-5.1"`` (the reference study's joints of a
 catalogue specimen, :func:`dem.core.contact.study_joints`).
 """
 from __future__ import annotations
 
-from analytic.calibration import load_calibration
+from analytic.limit.calibration import load_calibration
 from dem.core.contact import study_joints
 from dem.core.settings import Settings
 from specimens.blocks import check_contact

@@ -6,10 +6,10 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.assessment import NOH_GUMBAD_FRP, assess, assess_monument, monument_site
-from analytic.frp import GAMMA_FRP, Strips, strengthened_collapse
-from analytic.kinematic import CONFIDENCE_FACTORS, Height
-from analytic.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum
+from analytic.codes.assessment import NOH_GUMBAD_FRP, assess, assess_monument, monument_site
+from analytic.codes.frp import GAMMA_FRP, Strips, strengthened_collapse
+from analytic.codes.kinematic import CONFIDENCE_FACTORS, Height
+from analytic.motions.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum
 from dem.common.options import (
     add_arch_arguments,
     add_engine_argument,

@@ -10,7 +10,7 @@ import math
 import numpy as np
 from matplotlib.figure import Figure
 
-from analytic.spectra import rebuild
+from analytic.motions.spectra import rebuild
 from specimens.constants import G
 from specimens.io import atomic_path
 

@@ -6,13 +6,13 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 
-from analytic.assessment import Assessment, assess, monument_site
-from analytic.frp import strengthened_collapse
-from analytic.inputs import SampledMotion
-from analytic.kinematic import CONFIDENCE_FACTORS, Q_MASONRY, Height
-from analytic.linkage import governing_four_bar
-from analytic.matching import MatchedRecord, match_record
-from analytic.records import baseline_correct, read_record
+from analytic.codes.assessment import Assessment, assess, monument_site
+from analytic.codes.frp import strengthened_collapse
+from analytic.codes.kinematic import CONFIDENCE_FACTORS, Q_MASONRY, Height
+from analytic.motions.inputs import SampledMotion
+from analytic.motions.matching import MatchedRecord, match_record
+from analytic.motions.records import baseline_correct, read_record
+from analytic.rocking.linkage import governing_four_bar
 from dem.core.settings import Settings
 from dem.experiments.record.run import RecordRun, dem_verdict, run_records
 from specimens.blocks import DEFAULT_DENSITY, Assembly, discretise
@@ -115,21 +115,21 @@ def assess_with_records(target, records=(), site=None, *, configuration: str | N
                         settings: Settings | None = None, workers: int | None = None,
                         density: float | None = None, contact: float = 1.0, piers=None,
                         n_voussoirs: int | None = None) -> ArchAssessment:
-    """Assess ``target`` against ``site`` (:mod:`analytic.spectra`) as ``archdem assess --records`` does:
-    the governing four-bar (:func:`analytic.linkage.governing_four_bar`), the code checks of
-    ``limit_state`` (:func:`analytic.assessment.assess`) and, with ``records`` (files or sampled
+    """Assess ``target`` against ``site`` (:mod:`analytic.motions.spectra`) as ``archdem assess --records`` does:
+    the governing four-bar (:func:`analytic.rocking.linkage.governing_four_bar`), the code checks of
+    ``limit_state`` (:func:`analytic.codes.assessment.assess`) and, with ``records`` (files or sampled
     motions), their virtual check on the DEM (:func:`check_records`).
 
     ``target``: a monument (``"noh-gumbad"``: its ring as reconstructed, the piers of ``configuration``
     (default the first, "ring alone"), its density, by default its site, and the least mechanism of
-    the fine cut as in :func:`analytic.assessment.assess_monument`) or an arch (catalogue id,
+    the fine cut as in :func:`analytic.codes.assessment.assess_monument`) or an arch (catalogue id,
     ``Specimen`` or ``PointedArch``; ``site`` needed). ``density`` [kg/m^3], ``contact`` (the joints'
     contact fraction), ``piers`` and ``n_voussoirs``: the blocks, as :func:`specimens.blocks.discretise`.
     """
     label, arch, m_density, m_piers, m_site = _structure(target, configuration)
     site = site if site is not None else m_site
     if site is None:
-        raise ArchdemInputError("the assessment needs the site's elastic spectrum (analytic.spectra: ec8, ntc2018)")
+        raise ArchdemInputError("the assessment needs the site's elastic spectrum (analytic.motions.spectra: ec8, ntc2018)")
     piers = piers if piers is not None else m_piers
     kw = {"density": density if density is not None else m_density if m_density is not None else DEFAULT_DENSITY,
           "contact": contact, "piers": piers, **({"n_voussoirs": n_voussoirs} if n_voussoirs is not None else {})}

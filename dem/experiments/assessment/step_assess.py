@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from analytic.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
-from analytic.frp import Strips
+from analytic.codes.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
+from analytic.codes.frp import Strips
 from dem.common.campaign import CampaignContext, write_csv
 from specimens.constants import G
 from specimens.monuments import NOH_GUMBAD

@@ -95,7 +95,7 @@ def _groups(args: argparse.Namespace) -> tuple[list, dict]:
     if args.stripes is None or args.im is None or args.amplitudes is not None:
         raise ArchdemInputError("--records goes with --im pga|pgv|sa:T and --stripes; --amplitudes belongs to --sine")
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.matching import intensity_measure, parse_im
+    from analytic.motions.matching import intensity_measure, parse_im
 
     im = parse_im(args.im)
     unit, factor = ("m/s", 1.0) if im[0] == "pgv" else ("g", G)

@@ -11,7 +11,7 @@ deterministic run (``archdem shake``) bit for bit.
 
 Every run is a case of :func:`dem.studies.sweep.run_study` (all local cores or a Dask cluster;
 stored as it finishes; ``resume`` runs only what is missing). :func:`fragility` groups the stored
-runs into stripes and fits them (:mod:`analytic.fragility`).
+runs into stripes and fits them (:mod:`analytic.codes.fragility`).
 """
 from __future__ import annotations
 
@@ -23,8 +23,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from analytic.inputs import SampledMotion, SinePulse
-from analytic.records import baseline_correct, read_record
+from analytic.motions.inputs import SampledMotion, SinePulse
+from analytic.motions.records import baseline_correct, read_record
 from dem.core.model import from_assembly, single_block
 from dem.core.settings import Settings
 from dem.experiments.shake.run import ShakeProtocol, shake
@@ -129,7 +129,7 @@ def prepared_record(path: str):
     """A record as the fragility runs it: baseline-corrected and cut to its significant duration;
     returns the motion and its sample window."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.matching import arias_window, significant_window
+    from analytic.motions.matching import arias_window, significant_window
 
     m = baseline_correct(read_record(path))
     return significant_window(m), arias_window(m)
@@ -223,7 +223,7 @@ def fragility(label: str, structure: dict, settings: dict, perturbation: Perturb
     """Run (or resume) the study of ``groups`` x ``n`` realisations and fit each group's curve;
     ``deterministic``: group -> threshold of the nominal structure, reported beside the fit."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.fragility import fit_lognormal, stripes
+    from analytic.codes.fragility import fit_lognormal, stripes
     from dem.studies.sweep import case_key, run_study
 
     t0 = time.perf_counter()

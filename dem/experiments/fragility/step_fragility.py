@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from analytic.domain import failure_domain
-from analytic.linkage import minimised_four_bar
+from analytic.rocking.domain import failure_domain
+from analytic.rocking.linkage import minimised_four_bar
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.core.model import as_model
 from dem.core.settings import Settings

@@ -20,13 +20,13 @@ Definitions (recorded with every result):
   (``monotonic = False``) and listed with the points. ``status``: ``bracketed``,
   ``all_rocking`` (the smallest friction of the grid already rocks: ``mu* <= `` it; ``mu*`` is
   ``None``), ``all_sliding`` (``mu* >`` the largest friction) or ``no_data``.
-* **LP mu\\***: the static LP (:func:`analytic.limit_discrete.solve_lp`, associative friction)
+* **LP mu\\***: the static LP (:func:`analytic.limit.limit_discrete.solve_lp`, associative friction)
   gives ``lambda_LP(mu)``, non-decreasing in ``mu``; its no-sliding value is the LP with
   ``mu_joint = inf`` at the same ``mu_base`` (equal to the kinematic enumeration when the base
   does not slide). ``mu*_LP`` = the least ``mu`` with ``lambda_LP(mu) >= (1 - 1e-6) lambda_no_sliding``,
   found by bisection (to ``1e-4``). Below it the LP mechanism has a joint that slides (checked:
   the LP joint states just below and just above ``mu*_LP`` are stored).
-* **Two-bar mu\\***: :func:`analytic.two_bar.mu_star` with the rocking multiplier of the
+* **Two-bar mu\\***: :func:`analytic.limit.two_bar.mu_star` with the rocking multiplier of the
   *discrete* arch (kinematic enumeration, the arch the DEM simulates); the value against the
   continuous-profile multiplier is stored too (``mu_star_two_bar_continuous``).
 
@@ -187,7 +187,7 @@ def _finite_or_none(x: float) -> float | None:
 def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) -> float | None:
     """Least joint friction at which the LP multiplier reaches ``lam_ns`` (module docstring)."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
 
     def full(mu: float) -> bool:
         return solve_lp(assembly, mu, mu_base).lam >= (1 - LP_REL_TOL) * lam_ns
@@ -206,10 +206,10 @@ def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequenc
     On ``piers`` the continuous one has hinges anywhere along ring and piers, and the two-bar ones
     (a ring on a rigid base) are NaN."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-    from analytic.limit_piers import continuous_on_piers
-    from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
+    from analytic.limit.limit_continuous import continuous_collapse
+    from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.limit.limit_piers import continuous_on_piers
+    from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
 
     asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact, piers=piers)
     mu = np.asarray(sorted(set(float(m) for m in mus)), dtype=float)

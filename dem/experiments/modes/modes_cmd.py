@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.modes import KS_OVER_KN, POISSON, SPRINGS, ks_over_kn, modes
+from analytic.compliant.modes import KS_OVER_KN, POISSON, SPRINGS, ks_over_kn, modes
 from dem.common.options import (
     add_arch_arguments,
     arch_from_args,

@@ -1,5 +1,5 @@
 """Free vibration of a model on compliant joints: the frequencies and damping ratios the DEM gives,
-for checks against closed forms and ``analytic.modes`` (docs/physics/dem.md#17-compliant-joints).
+for checks against closed forms and ``analytic.compliant.modes`` (docs/physics/dem.md#17-compliant-joints).
 
 The model starts as built, its joints unloaded: under its weight it drops onto its springs and
 swings about its rest position (the vertical modes); once that has settled, a short horizontal

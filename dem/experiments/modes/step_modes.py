@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from analytic.modes import modes
+from analytic.compliant.modes import modes
 from dem.common.campaign import CampaignContext, write_csv
 from dem.common.joints import STUDY_JOINTS
 from dem.core.contact import normal_stiffness, study_joints

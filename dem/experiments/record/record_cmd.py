@@ -5,7 +5,7 @@ import argparse
 
 import numpy as np
 
-from analytic.records import FORMATS, load_record
+from analytic.motions.records import FORMATS, load_record
 from dem.common.options import print_json
 from specimens.constants import G
 

@@ -1,7 +1,7 @@
 """The virtual check of a code assessment: the structure shaken by records matched to the site
 (docs/physics/assessment.md#6-records-matched-to-the-site).
 
-Each matched record (:func:`analytic.matching.match_record`) is run on the DEM model; the answer per
+Each matched record (:func:`analytic.motions.matching.match_record`) is run on the DEM model; the answer per
 record is collapse or not and the peak displacement of the equivalent oscillator, ``d* = d_C / e*``
 with ``d_C`` the horizontal displacement of the bodies' mass centroid (the control point of the
 capacity curve). The verdict follows the codes' rule for non-linear dynamic analysis of a local

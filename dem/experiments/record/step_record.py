@@ -7,8 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from analytic.inputs import SampledMotion
-from analytic.records import baseline_correct, read_record, with_zero_tail
+from analytic.motions.inputs import SampledMotion
+from analytic.motions.records import baseline_correct, read_record, with_zero_tail
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import as_model
 from dem.core.settings import Settings

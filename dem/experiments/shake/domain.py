@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Sequence
 
-from analytic.domain import failure_domain as linkage_domain
+from analytic.rocking.domain import failure_domain as linkage_domain
 from dem.core.model import as_model
 from dem.core.settings import Settings
 from dem.experiments.shake import thresholds
@@ -41,11 +41,11 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
 def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, workers: int | None = 1,
                      contact: float = 1.0, piers=None) -> dict:
     """Four-bar (minimised layout) and two-bar analytic domains of ``arch`` for the plain sine
-    (``sine0``, the DEM input) at ``freqs``: name -> :class:`analytic.domain.FailureDomain`.
+    (``sine0``, the DEM input) at ``freqs``: name -> :class:`analytic.rocking.domain.FailureDomain`.
     With an effective ``contact`` < 1 only the four-bar (the two-bar does not model it); on
     ``piers`` only the four-bar of the discrete mechanism through them."""
     # deferred: `archdem --help` imports this module, not the linkages (scipy) (docs/architecture.md#imports)
-    from analytic import linkage
+    from analytic.rocking import linkage
 
     out = {}
     fb = linkage.governing_four_bar(arch, density, contact, piers)

@@ -6,7 +6,7 @@ import argparse
 import math
 from dataclasses import replace
 
-from analytic.domain import failure_domain
+from analytic.rocking.domain import failure_domain
 from dem.common.joints import contact_fraction
 from dem.common.options import (
     CONTACT_LAW_DESTS,
@@ -52,12 +52,12 @@ def restitution_option(text: str) -> float | None:
 def build_mechanism(args: argparse.Namespace):
     """``(label, mechanism)`` opened by a positive ground acceleration, from the options."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic import linkage
+    from analytic.rocking import linkage
 
     density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
     if args.block is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from analytic.rocking_block import RockingBlock
+        from analytic.rocking.rocking_block import RockingBlock
 
         if args.id is not None or any(getattr(args, k) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
             raise ArchdemInputError("give either --block B H or an arch, not both")
@@ -100,7 +100,7 @@ def build_mechanism(args: argparse.Namespace):
 def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: float):
     """The four-bar of the discrete minimum mechanism (the only linkage of an arch on piers)."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.linkage import mechanism_four_bar
+    from analytic.rocking.linkage import mechanism_four_bar
 
     if model != "four-bar":
         raise ArchdemInputError("an arch on piers rocks as the four-bar of its discrete mechanism; use --model four-bar")
@@ -136,7 +136,7 @@ def _run_domain(args: argparse.Namespace) -> int:
     if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
         raise ArchdemInputError("--contact-law, --kn, --youngs, --damping-* and --joints are the DEM's joints (--engine dem)")
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.impact import post_impact
+    from analytic.rocking.impact import post_impact
 
     rest = restitution_option(args.restitution)
     pulses = args.input in ("A", "B")
@@ -162,7 +162,7 @@ def _run_domain(args: argparse.Namespace) -> int:
     e = post_impact(mech, rest).e_applied
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from analytic.figures_dynamics import plot_domain
+        from analytic.rocking.figures import plot_domain
 
         plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
     if args.json:

@@ -61,7 +61,7 @@ def save_shake_figure(result, path: str | Path) -> Path:
 def plot_domain_over_analytic(dem: dict, analytic: dict, path: str | Path, title: str = "") -> Path:
     """DEM failure domain (collapse bands shaded, thresholds as markers) over the analytic
     four-bar / two-bar thresholds (lines). ``dem``: dict of :func:`dem.experiments.shake.thresholds.failure_domain`;
-    ``analytic``: name -> :class:`analytic.domain.FailureDomain`."""
+    ``analytic``: name -> :class:`analytic.rocking.domain.FailureDomain`."""
     fig = Figure(figsize=(7, 5))
     ax = fig.subplots()
     xs = sorted({b["x"] for b in dem["bands"]})

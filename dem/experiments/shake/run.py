@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from analytic.inputs import GroundMotion
+from analytic.motions.inputs import GroundMotion
 from dem.core import detect
 from dem.core.loads import GroundShake
 from dem.core.model import Model, as_model
@@ -186,7 +186,7 @@ def first_rebound(t: np.ndarray, u: np.ndarray, onset: float) -> tuple[float | N
 
 def shake(target, motion: GroundMotion, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
           label: str | None = None, friction_work: bool = True, config: str = "glued") -> ShakeResult:
-    """Run ``motion`` (ground acceleration [m/s^2], +x; :func:`analytic.records.ground_motion` builds
+    """Run ``motion`` (ground acceleration [m/s^2], +x; :func:`analytic.motions.records.ground_motion` builds
     one in g) on ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model, see
     :func:`dem.core.model.as_model`); see the module docstring. ``friction_work=False`` skips the
     contact-force readout behind the friction work (NaN then)."""

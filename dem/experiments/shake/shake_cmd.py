@@ -6,7 +6,7 @@ import argparse
 import math
 import sys
 
-from analytic.records import ground_motion
+from analytic.motions.records import ground_motion
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,

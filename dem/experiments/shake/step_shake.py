@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import from_assembly
 from dem.core.settings import Settings

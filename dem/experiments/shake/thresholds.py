@@ -20,7 +20,7 @@ not converged at 6 Hz in either engine, so read thresholds above ~4 Hz as a rang
 (docs/validation.md#10-shake-thresholds).
 
 A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
-(:class:`analytic.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
+(:class:`analytic.motions.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
 in m/s^2 inside; results are reported in g.
 """
 from __future__ import annotations
@@ -34,7 +34,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from analytic.inputs import GroundMotion, SinePulse
+from analytic.motions.inputs import GroundMotion, SinePulse
 from analytic.search import Bracket, search
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
@@ -233,9 +233,9 @@ def _bands(runs: Sequence[Outcome], first: float | None) -> tuple[dict, ...]:
 
 def static_onset(model: Model, settings: Settings) -> float:
     """Static collapse multiplier ``lambda`` of the model's blocks at the settings' frictions (the static
-    LP, :func:`analytic.limit_discrete.solve_lp`): no pulse below ``lambda g`` moves the arch."""
+    LP, :func:`analytic.limit.limit_discrete.solve_lp`): no pulse below ``lambda g`` moves the arch."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
 
     if model.assembly is None:
         raise ArchdemInputError(f"{model.name}: the static onset needs the blocks the model was built from")

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from analytic.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, read_experiments
+from analytic.limit.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, read_experiments
 from dem.common.options import print_json, writable_file
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path, to_json

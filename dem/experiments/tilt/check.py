@@ -1,7 +1,7 @@
 """A tilt test beside the limit analysis of the same blocks: the one row of every tilt validation
 (the campaign's tilt step, ``archdem compare-engines``, ``benchmarks/validate_dem.py``).
 
-The reference is the static LP (:func:`analytic.limit_discrete.solve_lp`) of the blocks the DEM
+The reference is the static LP (:func:`analytic.limit.limit_discrete.solve_lp`) of the blocks the DEM
 simulated. A test that prevents sliding (both frictions at least ``NO_SLIDING_MU``) is checked
 against the LP with infinite friction, which is exact for rocking; with Coulomb friction the
 associative LP is no bound and is reported for orientation (docs/validation.md).
@@ -64,7 +64,7 @@ def prevents_sliding(mu_joint: float, mu_base: float) -> bool:
 def reference_lp(assembly, mu_joint: float, mu_base: float):
     """The LP a tilt test at these frictions is checked against (module docstring)."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
 
     if prevents_sliding(mu_joint, mu_base):
         return solve_lp(assembly, math.inf, math.inf)

@@ -154,7 +154,7 @@ def lp_guess(assembly, settings: Settings) -> float | None:
     """First estimate of the tilt lambda of ``assembly`` (a :mod:`specimens.blocks` assembly):
     the static LP of the same blocks at the settings' frictions, or None if it has none."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
 
     try:
         lam = float(solve_lp(assembly, settings.mu_joint, settings.mu_base).lam)

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
+from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.experiments.tilt.ensemble import tilt_ensemble
 from specimens.imperfection import Imperfection

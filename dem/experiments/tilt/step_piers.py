@@ -7,7 +7,7 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 
-from analytic.limit_discrete import solve_lp
+from analytic.limit.limit_discrete import solve_lp
 from dem.common.campaign import CampaignContext, pct, studies_dir, write_csv
 from dem.experiments.tilt.case import DEM_CASE, make_case
 from dem.studies.sweep import case_key, run_study

@@ -16,8 +16,8 @@ import h5py
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.motions.inputs import SinePulse
 from dem.campaign.runner import STEPS, default_steps, run_campaign
 from dem.common.campaign import CampaignContext
 from dem.experiments.friction_map.step_map import map_plan
@@ -58,7 +58,7 @@ class StandIns:
     """Monkeypatches of the seams the steps simulate through, and what they were asked."""
 
     def __init__(self, mp: pytest.MonkeyPatch, specimens: list, ctx: CampaignContext):
-        import analytic.figures_limit as figures_limit
+        import analytic.limit.figures as figures_limit
         import dem.experiments.friction_map.run as friction_map
         import dem.experiments.shake.domain as domain
         import dem.experiments.shake.run as shake
@@ -207,7 +207,7 @@ def test_catalogue_table_and_heaviest_specimen(campaign):
 
 # ----------------------------------------------------------------------------- analytic
 def test_analytic_table_matches_the_limit_analysis_called_directly(campaign):
-    from analytic.two_bar import lambda_two_bar
+    from analytic.limit.two_bar import lambda_two_bar
 
     rows = {r["id"]: r for r in _rows(campaign["out"], "analytic")}
     assert list(rows) == SPECIMENS.split(",")
@@ -304,7 +304,7 @@ def test_tilt_collapse_figures_of_the_first_rocking_and_first_sliding_specimen(c
 # ----------------------------------------------------------------------------- map
 # ----------------------------------------------------------------------------- lab
 def test_lab_table_holds_the_laboratory_the_calibration_and_the_stand_in(campaign):
-    from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
+    from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 
     rows = {r["id"]: r for r in _rows(campaign["out"], "lab")}
     tilt = {r["id"]: r for r in _rows(campaign["out"], "tilt")}
@@ -334,7 +334,7 @@ def test_lab_table_holds_the_laboratory_the_calibration_and_the_stand_in(campaig
 
 
 def test_lab_findings_agree_with_the_table(campaign):
-    from analytic.calibration import load_calibration
+    from analytic.limit.calibration import load_calibration
 
     rows = [r for r in _rows(campaign["out"], "lab") if r["kind"] == "laboratory"]
     cal = load_calibration()
@@ -462,7 +462,7 @@ def test_shake_findings_agree_with_the_table(campaign):
 
 # ----------------------------------------------------------------------------- record
 def test_record_table_holds_the_stand_in_collapse_pga(campaign):
-    from analytic.records import read_record
+    from analytic.motions.records import read_record
     from dem.experiments.record.step_record import RECORD_FILE, _record_path
 
     stand = campaign["stand"]

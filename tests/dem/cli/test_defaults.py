@@ -14,13 +14,13 @@ from dem.common.options import default_of
 
 def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
-    from analytic.assessment import assess
-    from analytic.calibration import CALIBRATION_FILE
-    from analytic.domain import failure_domain
-    from analytic.kinematic import Height
-    from analytic.modes import POISSON, modes
-    from analytic.spectra import ntc2018
-    from analytic.summary import analyse
+    from analytic.codes.assessment import assess
+    from analytic.codes.kinematic import Height
+    from analytic.compliant.modes import POISSON, modes
+    from analytic.limit.calibration import CALIBRATION_FILE
+    from analytic.limit.summary import analyse
+    from analytic.motions.spectra import ntc2018
+    from analytic.rocking.domain import failure_domain
     from dem.common.campaign import CampaignContext
     from dem.core.settings import Settings
     from dem.experiments.compare_engines.run import compare
@@ -121,7 +121,7 @@ def test_no_default_without_a_library_source(cmd):
 
 
 def test_help_texts_show_the_library_values():
-    from analytic.domain import failure_domain
+    from analytic.rocking.domain import failure_domain
     from dem.core.settings import Settings
     from dem.experiments.compare_engines.run import FRICTIONS
     from dem.experiments.shake.animation import animate

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.engines import available_engines, get_engine
 from dem.core.model import from_assembly
 from dem.core.settings import Settings

@@ -102,7 +102,7 @@ def test_contact_forces_balance_the_weight_at_rest():
         e.close()
 
 
-import analytic.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tests below check against)
+import analytic.limit.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tests below check against)
 
 
 # representative subset: the thinnest pointed arch free (PyBullet's worst case, -4 %) and the thickest

@@ -3,7 +3,7 @@ import json
 
 import pytest
 
-from analytic.spectra import ec8, ntc2018
+from analytic.motions.spectra import ec8, ntc2018
 from dem.cli import main
 from specimens.constants import G
 

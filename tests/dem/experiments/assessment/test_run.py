@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from analytic.spectra import ec8
+from analytic.motions.spectra import ec8
 from dem.cli import main
 from dem.experiments.assessment.run import assess_with_records
 from specimens.constants import G

@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from analytic.domain import failure_domain
-from analytic.rocking_block import RockingBlock
+from analytic.rocking.domain import failure_domain
+from analytic.rocking.rocking_block import RockingBlock
 from dem.core.settings import Settings
 from dem.experiments.fragility.run import (
     Perturbation,
@@ -30,7 +30,7 @@ def _case(structure, settings, pert, k, amp, freq=2.0):
 
 
 def test_no_perturbation_is_the_deterministic_run_bit_for_bit():
-    from analytic.inputs import SinePulse
+    from analytic.motions.inputs import SinePulse
     from specimens.constants import G
 
     arch = get_specimen("Sh06-Sd015").arch

@@ -137,8 +137,8 @@ def test_figures_written(tmp_path):
 # ----------------------------------------------------------------------------- analytic curves
 @pytest.mark.parametrize("sid", ["Sh06-Sd015", "Sh02-Sd020"])
 def test_analytic_curves_consistent(sid):
-    from analytic.limit_discrete import solve_lp
-    from analytic.two_bar import lambda_slide
+    from analytic.limit.limit_discrete import solve_lp
+    from analytic.limit.two_bar import lambda_slide
     from specimens.blocks import discretise
 
     arch = get_specimen(sid).arch
@@ -276,7 +276,7 @@ def test_cli_bad_input_exit_2(argv, words, capsys, tmp_path, monkeypatch):
 @pytest.mark.slow  # two real DEM tilts (7 simulations each): 30 s on 2 idle cores, ~60 s on a loaded machine
 def test_real_dem_map_two_frictions(tmp_path):
     """One specimen, two frictions far either side of its threshold."""
-    from analytic.limit_discrete import enumerate_mechanisms
+    from analytic.limit.limit_discrete import enumerate_mechanisms
     from specimens.blocks import discretise
 
     sp = get_specimen("Sh06-Sd015")
@@ -292,7 +292,7 @@ def test_real_dem_map_two_frictions(tmp_path):
     assert lo.mode in fm.SLIDING_MODES and lo.lam < hi.lam
     # the DEM's mode switch lies in (0.3, 1.2]; so does the LP's, checked on the LP itself: short of
     # its no-sliding multiplier at 0.3, reaching it at 1.2 (and mu*_LP, bisected, in between)
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
 
     th, asm = s.threshold, discretise(sp.arch, config="glued")
     assert (th.status, th.lo, th.hi) == ("bracketed", 0.3, 1.2)
@@ -320,7 +320,7 @@ def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
     piers (LP, enumeration, hinges anywhere), the two-bar ones (a ring on a rigid base) are absent."""
     import h5py
 
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
     from specimens import Piers, discretise
 
     real = fm.catalogue_map

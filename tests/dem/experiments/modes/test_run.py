@@ -1,10 +1,10 @@
-"""DEM free vibration of a block on compliant joints against the closed forms and analytic.modes."""
+"""DEM free vibration of a block on compliant joints against the closed forms and analytic.compliant.modes."""
 import importlib.util
 import math
 
 import pytest
 
-from analytic.modes import modes
+from analytic.compliant.modes import modes
 from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.modes.run import free_vibration
@@ -20,7 +20,7 @@ ENGINES = [pytest.param(e, marks=pytest.mark.skipif(importlib.util.find_spec(e) 
 def test_a_blocks_frequencies_and_damping(engine):
     """Vertical sqrt(k_n A / m); rocking on the springs at the base's ends (friction holds the base),
     sqrt((k_n A b^2 / 4 - m g h/2) / I_o) about the base centre — within 3 %, and the same as
-    analytic.modes; the damping ratios beta_R omega / 2 (rocking: times 1 + m g h/2 / (I_o omega²), the
+    analytic.compliant.modes; the damping ratios beta_R omega / 2 (rocking: times 1 + m g h/2 / (I_o omega²), the
     weight softens the mode, not its dashpots) within 20 % (PyBullet's implicit contact adds 0.001-0.004
     of its own at dt 0.1 ms)."""
     m = RHO * B * H * W
@@ -48,7 +48,7 @@ def test_rigid_joints_have_no_free_vibration():
 
 def test_an_arch_crown_vibrates_at_the_symmetric_mode_of_modes():
     """Sh02-Sd025 on soft joints (1e6 Pa/m): the crown's vertical vibration in PyBullet at the first
-    mode of analytic.modes that moves the crown vertically only (the symmetric one), within 3 %."""
+    mode of analytic.compliant.modes that moves the crown vertically only (the symmetric one), within 3 %."""
     import numpy as np
 
     from dem.core.model import as_model

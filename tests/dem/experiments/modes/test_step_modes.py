@@ -1,10 +1,10 @@
-"""The campaign's modes step: every specimen's frequencies, those of ``analytic.modes`` on the study's joints."""
+"""The campaign's modes step: every specimen's frequencies, those of ``analytic.compliant.modes`` on the study's joints."""
 import csv
 import json
 
 import pytest
 
-from analytic.modes import modes
+from analytic.compliant.modes import modes
 from dem.campaign.runner import run_campaign
 from dem.common.campaign import CampaignContext
 from specimens import get_specimen

@@ -1,7 +1,7 @@
 """The virtual check of an assessment: matched records on the DEM, and the codes' rule over them."""
 import numpy as np
 
-from analytic.inputs import SampledMotion
+from analytic.motions.inputs import SampledMotion
 from dem.experiments.record.run import RecordRun, dem_verdict, run_records
 from specimens import get_specimen
 from specimens.blocks import discretise

@@ -4,7 +4,7 @@ import shutil
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.shake.animation import animate, read_run

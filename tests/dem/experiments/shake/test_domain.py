@@ -7,8 +7,8 @@ import math
 
 import pytest
 
-from analytic.inputs import SinePulse
-from analytic.limit_discrete import solve_lp
+from analytic.limit.limit_discrete import solve_lp
+from analytic.motions.inputs import SinePulse
 from dem.experiments.shake import thresholds
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from specimens.blocks import discretise
@@ -130,8 +130,8 @@ def analytic():
 
 
 def test_analytic_domains_are_the_four_bar_and_two_bar_of_the_arch(analytic):
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.two_bar import lambda_two_bar
+    from analytic.limit.limit_continuous import continuous_collapse
+    from analytic.limit.two_bar import lambda_two_bar
 
     assert set(analytic) == {"four-bar", "two-bar"}
     # the minimised four-bar is the continuous ring's collapse mechanism: same multiplier
@@ -147,8 +147,8 @@ def test_analytic_domains_are_the_four_bar_and_two_bar_of_the_arch(analytic):
 
 
 def test_analytic_domains_agree_with_failure_domain_called_directly(analytic):
-    from analytic import linkage
-    from analytic.domain import failure_domain
+    from analytic.rocking import linkage
+    from analytic.rocking.domain import failure_domain
 
     fb = failure_domain(linkage.minimised_four_bar(SPEC.arch, 500.0), "sine0", FREQS, workers=1)
     got, want = analytic["four-bar"].points(), fb.points()
@@ -159,8 +159,8 @@ def test_analytic_domains_agree_with_failure_domain_called_directly(analytic):
 @pytest.mark.parametrize("freq", FREQS)
 def test_four_bar_threshold_separates_survival_from_collapse(analytic, freq):
     """The four-bar's own dynamics just below and just above its least collapsing amplitude."""
-    from analytic import linkage
-    from analytic.dynamics import simulate
+    from analytic.rocking import linkage
+    from analytic.rocking.dynamics import simulate
 
     mech = linkage.minimised_four_bar(SPEC.arch, 500.0)
     a = min(p["amplitude_g"] for p in analytic["four-bar"].points() if p["x"] == freq) * G

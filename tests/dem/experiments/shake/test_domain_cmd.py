@@ -31,7 +31,7 @@ def test_domain_json_block(capsys):
 def test_domain_json_arch_oppenheim(capsys):
     out = _json(capsys, ["domain", "Sh06-Sd015", "--layout", "oppenheim", "--freq", "2:3:1", "--scan", "12",
                          "--tol", "1e-2", "--workers", "1", "--restitution", "0.9", "--json"])
-    from analytic.linkage import arch_four_bar, oppenheim_hinges
+    from analytic.rocking.linkage import arch_four_bar, oppenheim_hinges
     from specimens.catalogue import get_specimen
 
     arch = get_specimen("Sh06-Sd015").arch
@@ -47,9 +47,9 @@ def test_rock_plot_and_json(tmp_path, capsys):
                          "--amplitude", "0.3", "--plot", str(png), "--json"])
     assert png.stat().st_size > 1000
     # the library's answer for the same block and input
-    from analytic.domain import make_input
-    from analytic.dynamics import simulate
-    from analytic.rocking_block import RockingBlock
+    from analytic.rocking.domain import make_input
+    from analytic.rocking.dynamics import simulate
+    from analytic.rocking.rocking_block import RockingBlock
     from specimens.constants import G
 
     blk = RockingBlock(0.1, 0.5)

@@ -7,7 +7,7 @@ import h5py
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.model import from_assembly, single_block
 from dem.core.settings import Settings
 from dem.experiments.shake.file import load_shake, save_shake

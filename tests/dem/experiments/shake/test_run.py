@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from analytic.inputs import PulseA, SinePulse
+from analytic.motions.inputs import PulseA, SinePulse
 from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.shake.file import load_shake, save_shake
@@ -67,8 +67,8 @@ def test_overturning_amplitude_matches_rocking_block_model(block, freq):
     balance), by two runs per frequency: BAND below it survives, BAND above it collapses. The
     validation's 10 % (docs/validation.md#3-single-block) is the scatter of impact modelling: the
     DEM impact keeps 0.77-0.80 of the energy against Housner's 0.83 (4 contact points and ERP)."""
-    from analytic.domain import failure_domain
-    from analytic.rocking_block import RockingBlock
+    from analytic.rocking.domain import failure_domain
+    from analytic.rocking.rocking_block import RockingBlock
 
     dom = failure_domain(RockingBlock(B / 2, H / 2), "sine0", [freq], a_max_ratio=8.0, n_scan=16, workers=1)
     a_an = dom.columns[0].thresholds[0][0]

@@ -13,7 +13,7 @@ DATA = Path(__file__).resolve().parents[3] / "data" / "ground_motions"
 
 def _lp_lambda() -> float:
     """The LP multiplier of SMALL (glued) at the default friction of joints and base."""
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
     from dem.core.settings import Settings
     from specimens import PointedArch, discretise
 
@@ -112,7 +112,7 @@ def test_threshold_json(tmp_path, capsys):
 
 
 def test_shake_and_threshold_take_the_effective_contact(tmp_path, capsys):
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
     from dem.core.settings import Settings
     from specimens import PointedArch, discretise
 

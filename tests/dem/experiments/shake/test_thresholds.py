@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.model import single_block
 from dem.core.settings import Settings
 from dem.experiments.shake import thresholds
@@ -115,8 +115,8 @@ def test_block_threshold_scan_and_bisection():
     """Full search on the single block at 3 Hz (planar, no sliding, two processes): the answer lies
     within 10 % of the analytic rocking-block threshold 0.3602 g (see test_shake for the tolerance),
     the bracket is 1 % wide and its ends were simulated with the stated outcomes."""
-    from analytic.domain import failure_domain
-    from analytic.rocking_block import RockingBlock
+    from analytic.rocking.domain import failure_domain
+    from analytic.rocking.rocking_block import RockingBlock
 
     a_an = failure_domain(RockingBlock(0.05, 0.2), "sine0", [3.0], a_max_ratio=8.0, n_scan=16,
                           workers=1).columns[0].thresholds[0][0] / G
@@ -137,9 +137,9 @@ def test_arch_threshold_no_sliding_2hz_above_static_onset():
     amplitude is at least the static onset lambda g of the LP (below it nothing moves), and within
     the scatter of impact modelling of the four-bar threshold (minimised layout, plain sine). The
     reference study found the four-bar conservative (DEM / four-bar >= 1); here it is not (0.935)."""
-    from analytic import linkage
-    from analytic.domain import failure_domain
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
+    from analytic.rocking import linkage
+    from analytic.rocking.domain import failure_domain
     from dem.core.model import from_assembly
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen

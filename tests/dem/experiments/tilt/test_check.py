@@ -2,7 +2,7 @@
 the 11 specimens x 2 configurations run in benchmarks/validate_dem.py."""
 import pytest
 
-import analytic.limit_discrete as lim
+import analytic.limit.limit_discrete as lim
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, tilt

@@ -5,7 +5,7 @@ import importlib.util
 
 import pytest
 
-from analytic.elastic_tilt import elastic_tilt
+from analytic.compliant.elastic_tilt import elastic_tilt
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.check import check_result
@@ -73,7 +73,7 @@ def test_at_rest_the_arch_stands_where_the_statics_of_its_springs_puts_it(engine
     the springs at the joints' exact corners, unloaded at the drawn geometry."""
     import numpy as np
 
-    from analytic.elastic_tilt import elastic_state
+    from analytic.compliant.elastic_tilt import elastic_state
     from dem.core.loads import Rest
     from dem.core.simulate import simulate
 

@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-import analytic.limit_discrete as lim
+import analytic.limit.limit_discrete as lim
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import tilt

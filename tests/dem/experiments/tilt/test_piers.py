@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from analytic.domain import domain_column
-from analytic.inputs import SinePulse
-from analytic.limit_discrete import solve_lp
-from analytic.rocking_block import rocking_frame_equivalent
+from analytic.limit.limit_discrete import solve_lp
+from analytic.motions.inputs import SinePulse
+from analytic.rocking.domain import domain_column
+from analytic.rocking.rocking_block import rocking_frame_equivalent
 from dem.core.model import frame_model, from_assembly
 from dem.core.settings import Settings
 from dem.experiments.shake.run import ShakeProtocol, shake
@@ -75,7 +75,7 @@ def test_frame_overturning_amplitude_matches_the_closed_form(engine, beam_densit
 
 
 def test_the_dem_domain_on_piers_stands_beside_the_four_bar_through_the_piers():
-    from analytic.linkage import mechanism_four_bar
+    from analytic.rocking.linkage import mechanism_four_bar
     from dem.experiments.shake.domain import analytic_domains
 
     arch, piers = get_specimen("Sh06-Sd015").arch, Piers(0.4, 0.144, courses=2)
