@@ -14,13 +14,16 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 LAYERS = ("specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
 MAX_COMMENT_BLOCK = 8  # lines; longer explanations belong in docs/
-# dem's floors, lowest first: a module imports its own sub-package or an earlier one (docs/architecture.md)
+# the floors of analytic and dem, lowest first: a module imports its own sub-package or an earlier one
+# (docs/architecture.md); the package tops, with their docstrings and public names, sit above their floors
 SUBPACKAGES = (
+    "analytic.search", "analytic.motions", "analytic.limit", "analytic.rocking", "analytic.compliant",
+    "analytic.codes", "analytic",
     "dem.core", "dem.studies", "dem.common",
     "dem.experiments.tilt", "dem.experiments.shake", "dem.experiments.fragility", "dem.experiments.friction_map",
     "dem.experiments.modes", "dem.experiments.record", "dem.experiments.assessment", "dem.experiments.compare_engines",
     "dem.campaign", "dem.cli",
-    "dem.experiments", "dem",  # the package tops: docstrings and the public names, above every floor
+    "dem.experiments", "dem",
 )
 
 
@@ -114,7 +117,7 @@ def subpackage_of(module: str) -> str | None:
 
 
 def subpackage_graph(edges: dict[str, set[str]]) -> dict[str, set[str]]:
-    """Sub-package -> the other sub-packages its modules import (modules of dem only)."""
+    """Sub-package -> the other sub-packages its modules import (modules of analytic and dem)."""
     out: dict[str, set[str]] = {}
     for a, targets in edges.items():
         sa = subpackage_of(a)
@@ -134,6 +137,11 @@ def later_imports(edges: dict[str, set[str]]) -> list[str]:
     rank = {s: i for i, s in enumerate(SUBPACKAGES)}
     return sorted(f"{a} -> {b}" for a in edges for b in edges[a]
                   if subpackage_of(a) and subpackage_of(b) and rank[subpackage_of(b)] > rank[subpackage_of(a)])
+
+
+def test_a_floor_of_analytic_importing_a_later_one_fails():
+    edges = {"analytic.limit.two_bar": {"analytic.rocking.linkage"}, "analytic.rocking.linkage": set()}
+    assert later_imports(edges) == ["analytic.limit.two_bar -> analytic.rocking.linkage"]
 
 
 def test_the_graph_sees_imports_inside_functions():
@@ -161,16 +169,17 @@ def test_library_code_never_imports_the_cli():
     assert bad == []
 
 
-def test_every_dem_module_sits_in_a_declared_subpackage():
-    assert [m for m in import_graph() if m.startswith("dem") and subpackage_of(m) is None] == []
-    assert all((ROOT / s.replace(".", "/") / "__init__.py").is_file() for s in SUBPACKAGES)
+def test_every_module_of_analytic_and_dem_sits_in_a_declared_subpackage():
+    assert [m for m in import_graph() if m.startswith(("analytic", "dem")) and subpackage_of(m) is None] == []
+    assert all((ROOT / s.replace(".", "/") / "__init__.py").is_file() or (ROOT / (s.replace(".", "/") + ".py")).is_file()
+               for s in SUBPACKAGES)
 
 
-def test_dem_subpackages_import_only_earlier_ones():
+def test_subpackages_import_only_earlier_ones():
     assert later_imports(import_graph()) == []
 
 
-def test_no_cycles_between_dem_subpackages():
+def test_no_cycles_between_subpackages():
     assert cycles(subpackage_graph(import_graph())) == []
 
 
