@@ -103,7 +103,7 @@ class StandIns:
             c["synthetic"] = {"mu_star": MAP_MU_STAR[label], "lam_rock": MAP_LAM_ROCK}
             return c
 
-        _everywhere(mp, friction_map, "make_case", map_make_case)
+        mp.setattr(friction_map, "make_case", map_make_case)  # the map's own, not the tilt step's
         _everywhere(mp, friction_map, "catalogue_map", lambda *a, **kw: real_map(*a, **{**kw, "func": cases.SYNTHETIC_CASE}))
         # shake step: the real four-bar domain, computed once here for the stand-in's truth
         (spec,), freqs = shake_plan(ctx)
@@ -134,7 +134,7 @@ class StandIns:
             hit = a >= RECORD_FACTOR * self.lam_static[model.name]
             return hit, ("rocking" if hit else "none"), ("after-first-rebound" if hit else None)
 
-        _everywhere(mp, thresholds, "collapses", collapses)
+        mp.setattr(thresholds, "collapses", collapses)
         # the time histories beside the shake thresholds: short real runs (0.05 s)
         real_shake = shake.shake
         _everywhere(mp, shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
