@@ -281,11 +281,12 @@ def print_json(obj: Any) -> None:
 
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:
-    """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
+    """``--engine pybullet|mujoco|lmgc90`` (the physics backend of the simulator)."""
+    from dem.core.engines import available_engines
     from dem.core.settings import Settings
 
     engine = default_of(Settings, "engine")
-    p.add_argument("--engine", choices=("pybullet", "mujoco"), default=engine,
+    p.add_argument("--engine", choices=tuple(available_engines()), default=engine,
                    help=f"physics engine (default {engine}; see README 'Choosing an engine')")
 
 
