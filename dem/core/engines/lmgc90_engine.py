@@ -14,8 +14,10 @@ What the binding allows, and how the model is mapped (the measurements: docs/eng
   +5.2 % of the key's area, glued crown +23 %), built with the body's mass (the density scaled), so
   only its centre of mass (lower) and inertia differ (:func:`hull_assembly` is that arch); relieved
   joints are refused (their collision pieces are not the body's mass);
-* **one contact law for every pair** (one see-table row, every contactor the same colour): a model
-  whose contacts are all on the base takes ``mu_base``, any other needs ``mu_joint == mu_base``;
+* **one contact law for every pair** as wrapped (``set_see_tables`` writes one see-table row, every
+  contactor the same colour): the worker writes the see table itself through LMGC90's procedures the
+  extension exports, the base's contactors in a colour of their own: ``mu_joint`` between blocks,
+  ``mu_base`` on the base, as in the other engines;
 * the gravity is fixed by the binding; it is written into LMGC90's gravity at every change
   (see the worker), which makes the tilt's turning field exact;
 * a driven base (shake table) is the equivalent inertial field: the base stays fixed and the ground
@@ -75,18 +77,6 @@ def substeps(dt: float, max_dt: float) -> int:
     return max(1, math.ceil(dt / max_dt - 1e-9))
 
 
-def friction(model: Model, settings: Settings) -> float:
-    """The one Coulomb coefficient of the model's contacts, or a one-line error naming the binding's limit."""
-    if all(j.is_base for j in model.joints):
-        return float(settings.mu_base)
-    if settings.mu_joint == settings.mu_base:
-        return float(settings.mu_joint)
-    raise ArchdemInputError(
-        f"the lmgc90 engine has one friction for every contact (compas_lmgc90 wraps one contact law and one "
-        f"see-table row): mu_joint {settings.mu_joint:g} and mu_base {settings.mu_base:g} differ; give them equal "
-        "(e.g. --mu-base equal to --mu-joint)")
-
-
 def convex_outline(body) -> tuple[np.ndarray, float]:
     """The one convex counter-clockwise polygon LMGC90 builds body ``body`` as, and the relative area it
     adds: the body's own piece if it has one, otherwise the convex hull of its pieces (0 if they are
@@ -143,7 +133,6 @@ def build_message(model: Model, settings: Settings, options: LMGC90Options) -> d
     if is_relieved(model):
         raise ArchdemInputError("the lmgc90 engine takes full joints only: relieved joints collide on pieces that are "
                                 "not the bodies' mass, and LMGC90 computes mass and inertia from the one polyhedron")
-    mu = friction(model, settings)
     h = settings.dt / substeps(settings.dt, options.max_dt)
     bodies = []
     for b in model.bodies:
@@ -155,8 +144,8 @@ def build_message(model: Model, settings: Settings, options: LMGC90Options) -> d
         v, f, vol = _polyhedron(np.asarray(poly, float), model.base.width, 0.0)
         bodies.append({"vertices": v, "triangles": f, "centroid": on_grid(v.mean(axis=0)), "support": True,
                        "density": bodies[0]["density"]})
-    return {"dt": h, "theta": options.theta, "law": options.law, "law_params": [mu], "alert": options.alert,
-            "bodies": bodies}
+    return {"dt": h, "theta": options.theta, "law": options.law, "joint_params": [float(settings.mu_joint)],
+            "base_params": [float(settings.mu_base)], "alert": options.alert, "bodies": bodies}
 
 
 def _rotvec(R: np.ndarray) -> np.ndarray:

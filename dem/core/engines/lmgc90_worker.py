@@ -10,8 +10,11 @@ imported here; the frame is LMGC90's (z up), the engine maps it to archdem's.
 Quirks of compas_lmgc90 0.1.11 handled here: its Python ``Solver`` imports the COMPAS stack, so the
 compiled module is driven directly; the gravity is fixed at (0, 0, -9.81) by ``set_materials`` and
 has no setter, so it is written into the bulk-behaviour module's exported gravity components, which
-LMGC90 reads at every step; the binding returns positions and inertia frames only, so velocities are
-the difference of the last two steps' poses.
+LMGC90 reads at every step; its ``set_see_tables`` writes one see-table row (one law for every pair,
+every contactor coloured ``REDxx``), so the see table is written here through LMGC90's own procedures
+that the extension exports (``tact_behaviour``'s see list, ``RBDY3``'s contactor colour): joints
+``REDxx``-``REDxx`` with the joint law, the base's contactors ``GRND_`` with the base law; the binding
+returns positions and inertia frames only, so velocities are the difference of the last two steps' poses.
 """
 from __future__ import annotations
 
@@ -23,6 +26,31 @@ import sys
 import numpy as np
 
 
+JOINT_LAW, BASE_LAW = "iqsc0", "iqsc1"  # contact-law nicknames (5 characters)
+BODY_COLOR, BASE_COLOR = "REDxx", "GRND_"  # contactor colours: the binding's for every body, and the base's
+
+
+def _c5(s: str) -> ctypes.c_char_p:
+    return ctypes.c_char_p(s.encode())
+
+
+def _see_table(lib, alert: float) -> None:
+    """The see table (instead of the binding's ``set_see_tables``): block-block pairs with the joint law,
+    block-base pairs (either as candidate) with the base law. Fortran procedures: arguments by reference,
+    the lengths of the character arguments appended."""
+    def proc(name: str):
+        return getattr(lib, f"__tact_behaviour_MOD_{name}")
+
+    proc("close_tact_behav_ll")()
+    proc("open_see_ll")()
+    a, ga = ctypes.c_double(alert), ctypes.c_double(0.0)
+    for cd, law, an in ((BODY_COLOR, JOINT_LAW, BODY_COLOR), (BODY_COLOR, BASE_LAW, BASE_COLOR),
+                        (BASE_COLOR, BASE_LAW, BODY_COLOR)):
+        proc("add_to_see_ll")(_c5("RBDY3"), _c5("POLYR"), _c5(cd), _c5(law), _c5("RBDY3"), _c5("POLYR"), _c5(an),
+                              ctypes.byref(a), ctypes.byref(ga), *([ctypes.c_size_t(5)] * 7))
+    proc("close_see_ll")()
+
+
 class Simulation:
     """One LMGC90 simulation built from a ``build`` message (see :func:`build_message` in the engine)."""
 
@@ -32,11 +60,13 @@ class Simulation:
         self.dt = float(spec["dt"])
         lm = self.lm = _lmgc90.LMGC90Solver()
         lm.initialize(self.dt, float(spec["theta"]), False)
-        lm.add_one_tact_behav("iqsc0", spec["law"], [float(x) for x in spec["law_params"]])
+        lm.add_one_tact_behav(JOINT_LAW, spec["law"], [float(x) for x in spec["joint_params"]])
+        lm.add_one_tact_behav(BASE_LAW, spec["law"], [float(x) for x in spec["base_params"]])
         densities = np.array(sorted({float(b["density"]) for b in spec["bodies"]}))
         lm.set_materials(densities)
         material = {d: f"s{k + 1:04d}" for k, d in enumerate(densities)}  # the binding's material names
-        lm.set_see_tables(float(spec["alert"]))
+        self.lib = lib = ctypes.CDLL(_lmgc90.__file__)
+        _see_table(lib, float(spec["alert"]))
         bodies = spec["bodies"]
         lm.set_nb_bodies(len(bodies))
         for i, b in enumerate(bodies):
@@ -47,6 +77,9 @@ class Simulation:
                              (v - c).ravel().tolist(), len(drv), 0)
             for d in drv:
                 lm.set_drvdof(i + 1, d, [0.0] * 6, True, False)
+            if fixed:
+                getattr(lib, "__rbdy3_MOD_set_color_rbdy3")(ctypes.byref(ctypes.c_int(i + 1)), ctypes.byref(ctypes.c_int(1)),
+                                                            _c5(BASE_COLOR), ctypes.c_size_t(5))
         lm.close_before_computing()
         init = lm.get_initial_state()
         self.n = len(bodies)
@@ -54,7 +87,6 @@ class Simulation:
         self.frame = np.array(init.init_body_frames, float).reshape(self.n, 3, 3)
         self.prev = (self.coor.copy(), self.frame.copy())
         self.last = None
-        lib = ctypes.CDLL(_lmgc90.__file__)
         self.grav = [ctypes.c_double.in_dll(lib, f"__bulk_behaviour_MOD_grav{k}") for k in (1, 2, 3)]
 
     def set_gravity(self, g) -> None:

@@ -24,11 +24,6 @@ ENGINES = [pytest.param(e, marks=pytest.mark.skipif(not engine_installed(e), rea
            for e in available_engines()]
 
 
-def _frictions(engine: str) -> dict:
-    """The reference frictions; LMGC90 as wrapped has one friction for every contact: the joints' there."""
-    return {"mu_base": Settings().mu_joint} if engine == "lmgc90" else {}
-
-
 @pytest.fixture(params=ENGINES)
 def engine(request) -> str:
     return request.param
@@ -62,7 +57,7 @@ def test_block_rocks_at_b_over_h(engine):
 @pytest.mark.parametrize("sid,config", [("Sh06-Sd010", "free"), ("Sh1-Sd025", "glued")])
 def test_rest_drift(engine, sid, config):
     m = from_assembly(discretise(get_specimen(sid).arch, config=config))
-    r = simulate(m, Settings(engine=engine, **_frictions(engine)), Rest(), 5.0, record_every=0.1, stop_on_collapse=False,
+    r = simulate(m, Settings(engine=engine), Rest(), 5.0, record_every=0.1, stop_on_collapse=False,
                  friction_work=False)
     assert not r.collapsed
     assert r.history.dmax.max() < 1e-4  # 0.1 mm in 5 s, the issue's gate
