@@ -163,17 +163,24 @@ class LMGC90Engine(Engine):
         self._proc = None
 
     # -- the worker -------------------------------------------------------------------------------
-    def _send(self, *msg) -> None:
-        pickle.dump(msg, self._proc.stdin, protocol=pickle.HIGHEST_PROTOCOL)
+    def _send(self, *msg, flush: bool = False) -> None:
+        try:
+            pickle.dump(msg, self._proc.stdin, protocol=pickle.HIGHEST_PROTOCOL)
+            if flush:
+                self._proc.stdin.flush()
+        except BrokenPipeError:
+            self._died()
+
+    def _died(self):
+        rc = self._proc.poll()
+        raise RuntimeError(f"the LMGC90 worker process ended (exit code {rc}); its messages are above") from None
 
     def _ask(self, *msg):
-        self._send(*msg)
+        self._send(*msg, flush=True)
         try:
-            self._proc.stdin.flush()
             status, data = pickle.load(self._proc.stdout)
-        except (EOFError, BrokenPipeError, pickle.UnpicklingError):
-            rc = self._proc.poll()
-            raise RuntimeError(f"the LMGC90 worker process ended (exit code {rc}); its messages are above") from None
+        except (EOFError, pickle.UnpicklingError):
+            self._died()
         if status != "ok":
             raise RuntimeError(f"LMGC90: {data}")
         return data
@@ -231,7 +238,9 @@ class LMGC90Engine(Engine):
         return (self._x, self._v) if self._driven else (0.0, 0.0)
 
     def step(self, n: int = 1) -> None:
+        # waits for the worker, so that a step's cost and errors land in the call that made it
         self._send("step", int(n) * self._nsub)
+        self._ask("sync")
         self._cache = None
 
     def _state(self) -> dict:

@@ -3,7 +3,7 @@
 LMGC90 keeps its state in Fortran module variables: one simulation per process, and a fatal error
 stops the whole process. :class:`dem.core.engines.lmgc90_engine.LMGC90Engine` therefore runs every
 simulation in one of these workers and talks to it over its standard input and output with pickled
-tuples (``build``, ``gravity``, ``step`` send nothing back; ``state`` and ``contacts`` answer
+tuples (``build``, ``gravity``, ``step`` send nothing back; ``sync``, ``state`` and ``contacts`` answer
 ``("ok", data)`` or ``("error", message)``). Only numpy and the binding's compiled module are
 imported here; the frame is LMGC90's (z up), the engine maps it to archdem's.
 
@@ -120,6 +120,9 @@ class Simulation:
         self.lm.finalize()
 
 
+QUERIES = ("sync", "state", "contacts")  # the commands answered
+
+
 def main() -> None:
     # the protocol keeps the pipe of fd 1; LMGC90's own prints go to stderr
     out = os.fdopen(os.dup(1), "wb")
@@ -135,7 +138,7 @@ def main() -> None:
         if cmd == "close":
             break
         try:
-            if error is not None and cmd in ("state", "contacts"):
+            if error is not None and cmd in QUERIES:
                 pickle.dump(("error", error), out)
                 out.flush()
                 continue
@@ -147,14 +150,14 @@ def main() -> None:
                 sim.set_gravity(msg[1])
             elif cmd == "step":
                 sim.step(int(msg[1]))
-            elif cmd in ("state", "contacts"):
-                pickle.dump(("ok", getattr(sim, cmd)()), out)
+            elif cmd in QUERIES:
+                pickle.dump(("ok", None if cmd == "sync" else getattr(sim, cmd)()), out)
                 out.flush()
             else:
                 raise ValueError(f"unknown command {cmd!r}")
         except Exception as e:  # answered now to a query, otherwise at the next one; the parent raises it
             error = f"{type(e).__name__}: {e}"
-            if cmd in ("state", "contacts"):
+            if cmd in QUERIES:
                 pickle.dump(("error", error), out)
                 out.flush()
     if sim is not None:
