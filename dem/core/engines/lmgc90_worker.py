@@ -72,7 +72,7 @@ class Simulation:
         for i, b in enumerate(bodies):
             v, f, c = np.asarray(b["vertices"], float), np.asarray(b["triangles"], int), np.asarray(b["centroid"], float)
             fixed = bool(b["support"])
-            drv = [d for d in range(1, 7)] if fixed else [int(d) for d in b.get("zero_dofs", ())]
+            drv = list(range(1, 7)) if fixed else []  # a support: every velocity dof held at zero
             lm.set_one_polyr(material[float(b["density"])], c.tolist(), (f + 1).ravel().tolist(),
                              (v - c).ravel().tolist(), len(drv), 0)
             for d in drv:
