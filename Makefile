@@ -11,8 +11,11 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
+# the LMGC90 engine (extra 'lmgc90') without the GUI stack its package declares: the solver run
+# imports only its compiled module (45 MB instead of ~1.1 GB; docs/engines.md#11-lmgc90)
 $(STAMP): $(BIN)/python pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[all,test]'
+	$(BIN)/python -m pip install --quiet --no-deps 'compas_lmgc90>=0.1.11,<0.2'
 	touch $(STAMP)
 
 venv: $(STAMP)

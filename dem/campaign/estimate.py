@@ -33,10 +33,10 @@ UNIT_CORE_S = {
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window
     ("record", False): 209.8,  # ... 7 s window, tol 1 %
 }
-ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7}
+ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7, "lmgc90": 10.0}  # lmgc90: a 6 Hz threshold, 1098 s against 112 s (docs/engines.md#11-lmgc90)
 # Wall seconds per simulated second that machine_speed reads on the machine of UNIT_CORE_S; the estimate
 # scales the unit costs by this machine's reading over these (docs/timings.md#3-the-campaigns-time-estimate)
-REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25}
+REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25, "lmgc90": 2.85}  # lmgc90: 1.5 x PyBullet's, paired at rest
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
 
 

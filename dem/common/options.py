@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
+from dem.core.engines import available_engines
 from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
@@ -265,9 +266,9 @@ def print_json(obj: Any) -> None:
 
 
 def add_engine_argument(p: argparse.ArgumentParser) -> None:
-    """``--engine pybullet|mujoco`` (the physics backend of the simulator)."""
+    """``--engine pybullet|mujoco|lmgc90`` (the physics backend of the simulator)."""
     engine = default_of(Settings, "engine")
-    p.add_argument("--engine", choices=("pybullet", "mujoco"), default=engine,
+    p.add_argument("--engine", choices=tuple(available_engines()), default=engine,
                    help=f"physics engine (default {engine}; see README 'Choosing an engine')")
 
 

@@ -6,7 +6,7 @@ from types import ModuleType
 
 from specimens.errors import ArchdemInputError
 
-EXTRAS = {"mujoco": "mujoco", "distributed": "cluster"}  # importable module -> archdem extra
+EXTRAS = {"mujoco": "mujoco", "distributed": "cluster", "compas_lmgc90": "lmgc90"}  # importable module -> archdem extra
 
 
 def require(module: str, purpose: str) -> ModuleType:

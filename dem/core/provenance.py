@@ -37,7 +37,7 @@ def cpu_math() -> str:
 def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
     """Versions of archdem and the libraries whose numbers a result depends on."""
     out = {"python": sys.version.split()[0], "platform": platform.platform(), "cpu_math": cpu_math()}
-    for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco") + tuple(extra):
+    for name in ("archdem", "numpy", "scipy", "trimesh", "h5py", "pybullet", "mujoco", "compas_lmgc90") + tuple(extra):
         out[name] = package_version(name)
     return out
 

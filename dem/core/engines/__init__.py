@@ -7,21 +7,31 @@ from dem.core.engines.base import Engine
 from dem.core.extras import require
 from specimens.errors import ArchdemInputError
 
-_ENGINES = {"pybullet": ("dem.core.engines.pybullet_engine", "PyBulletEngine"), "mujoco": ("dem.core.engines.mujoco_engine", "MuJoCoEngine")}
+_ENGINES = {"pybullet": ("dem.core.engines.pybullet_engine", "PyBulletEngine"), "mujoco": ("dem.core.engines.mujoco_engine", "MuJoCoEngine"),
+            "lmgc90": ("dem.core.engines.lmgc90_engine", "LMGC90Engine")}
+#: The module each optional engine needs (dem.core.extras names the extra that installs it).
+_MODULES = {"mujoco": ("mujoco", "the MuJoCo engine"), "lmgc90": ("compas_lmgc90", "the LMGC90 engine")}
 
 
 def available_engines() -> list[str]:
     return sorted(_ENGINES)
 
 
+def engine_installed(name: str) -> bool:
+    """True if engine ``name``'s optional package is importable (always for PyBullet)."""
+    import importlib.util
+
+    return name not in _MODULES or importlib.util.find_spec(_MODULES[name][0]) is not None
+
+
 def get_engine(name: str) -> Engine:
     """A new backend instance of engine ``name`` (see :func:`available_engines`)."""
     if name not in _ENGINES:
         raise ArchdemInputError(f"unknown engine {name!r}; available: {', '.join(available_engines())}")
-    if name == "mujoco":
-        require("mujoco", "the MuJoCo engine")
+    if name in _MODULES:
+        require(*_MODULES[name])
     mod, cls = _ENGINES[name]
     return getattr(importlib.import_module(mod), cls)()
 
 
-__all__ = ["Engine", "get_engine", "available_engines"]
+__all__ = ["Engine", "get_engine", "available_engines", "engine_installed"]
