@@ -12,6 +12,7 @@ The misfit reported is the largest and the mean |ln(k Sa / Se)| over the range.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,7 +28,10 @@ ARIAS_WINDOW = (0.05, 0.95)
 
 def response_spectrum(motion: SampledMotion, periods, damping: float = 5.0) -> np.ndarray:
     """Pseudo-spectral acceleration [m/s^2] of ``motion`` at ``periods`` [s], ``damping`` [%] (pyrotd)."""
-    import pyrotd
+    with warnings.catch_warnings():
+        # pyrotd 0.6.1 reads its own version through pkg_resources, which warns on import that it is deprecated
+        warnings.filterwarnings("ignore", message="pkg_resources is deprecated")
+        import pyrotd
 
     T = np.asarray(periods, dtype=float)
     if np.any(T <= 0) or not np.all(np.isfinite(T)):
