@@ -57,7 +57,10 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as exc:  # a usage error (one line, code 2) or --help / --version (code 0)
         return int(exc.code or 0)
     try:
-        return int(args.func(args) or 0)
+        code = int(args.func(args) or 0)
+        # a reader that went away shows here, not at exit (where Python 3.13 exits with 120)
+        sys.stdout.flush()
+        return code
     except ArchdemInputError as exc:
         print(f"archdem: error: {exc}", file=sys.stderr)
         return 2
