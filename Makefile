@@ -43,8 +43,8 @@ clean:
 # Python 3.13 on Debian 13, as root (.ci/debian13: a debootstrapped root, made once then reused):
 # the tests of PY313_TESTS there, then the quick campaign's catalogue, tilt, shake and map tables
 # of one specimen on 3.13 and on this venv's Python, compared cell by cell (.ci/same_tables.py).
-PY313_TESTS  ?= tests/specimens tests/analytic tests/dem/core tests/dem/experiments/test_tilt.py \
-                tests/dem/cli/test_tilt_cmd.py tests/test_readme.py
+PY313_TESTS  ?= tests/specimens tests/analytic tests/dem/core tests/dem/campaign tests/dem/cli \
+                tests/dem/experiments/test_tilt.py tests/test_readme.py
 SAME_NUMBERS ?= --quick --specimens Sh02-Sd020 --steps catalogue,tilt,shake,map
 SAME_DIR     := runs/same-numbers
 
