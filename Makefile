@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench venv clean browser
+.PHONY: demo test bench venv clean browser test-py313
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -42,3 +42,18 @@ bench: $(STAMP)
 
 clean:
 	rm -rf $(VENV) build *.egg-info
+
+# Python 3.13 on Debian 13, as root (.ci/debian13: a debootstrapped root, made once then reused):
+# the tests of PY313_TESTS there, then the quick campaign's catalogue, tilt, shake and map tables
+# of one specimen on 3.13 and on this venv's Python, compared cell by cell (.ci/same_tables.py).
+PY313_TESTS  ?= tests/specimens tests/analytic tests/dem/core tests/dem/campaign tests/dem/cli \
+                tests/dem/experiments/test_tilt.py tests/test_readme.py
+SAME_NUMBERS ?= --quick --specimens Sh02-Sd020 --steps catalogue,tilt,shake,map
+SAME_DIR     := runs/same-numbers
+
+test-py313: $(STAMP)
+	.ci/debian13 python -m pytest -q -p no:cacheprovider $(PY313_TESTS)
+	rm -rf $(SAME_DIR)
+	.ci/debian13 archdem campaign $(SAME_NUMBERS) --out $(SAME_DIR)/py313
+	nice -n 5 $(BIN)/archdem campaign $(SAME_NUMBERS) --out $(SAME_DIR)/host
+	$(BIN)/python .ci/same_tables.py $(SAME_DIR)/host $(SAME_DIR)/py313

@@ -180,7 +180,8 @@ class Assembly:
 
     @property
     def total_mass(self) -> float:
-        return float(sum(b.mass for b in self.bodies))
+        # fsum: correctly rounded on every Python (builtin sum compensates from 3.12 on, not on 3.11)
+        return math.fsum(b.mass for b in self.bodies)
 
     @cached_property
     def centroid(self) -> np.ndarray:

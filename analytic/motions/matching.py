@@ -12,10 +12,15 @@ The misfit reported is the largest and the mean |ln(k Sa / Se)| over the range.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
-import pyrotd
+
+with warnings.catch_warnings():
+    # pyrotd 0.6.1 reads its own version through pkg_resources, which warns on import that it is deprecated
+    warnings.filterwarnings("ignore", message="pkg_resources is deprecated")
+    import pyrotd
 
 from analytic.motions.inputs import SampledMotion
 from specimens.errors import ArchdemInputError

@@ -1,6 +1,8 @@
 """Records matched to a site spectrum: the response spectrum (pyrotd) against the closed form of a
 damped oscillator, the Arias window, the least-squares scale."""
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -21,6 +23,17 @@ def test_a_long_sine_at_resonance_and_a_stiff_oscillator():
     Sa = response_spectrum(m, [1 / f, 0.011])
     assert Sa[0] == pytest.approx(a / (2 * 0.05), rel=0.02)
     assert Sa[1] == pytest.approx(a, rel=0.02)
+
+
+def test_the_spectrum_runs_without_a_warning():
+    """pyrotd imports pkg_resources (setuptools < 82, declared), which warns that it is deprecated:
+    not shown to users. A fresh process, as pyrotd warns only on its first import."""
+    code = ("import numpy as np; from analytic.motions.inputs import SampledMotion; "
+            "from analytic.motions.matching import response_spectrum; "
+            "print(response_spectrum(SampledMotion(np.sin(np.arange(0, 4, 0.01)), 0.01), [0.5])[0])")
+    out = subprocess.run([sys.executable, "-W", "error", "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stderr == "" and float(out.stdout) > 0
 
 
 def test_the_significant_window_and_the_scale():
