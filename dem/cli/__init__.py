@@ -17,13 +17,13 @@ from importlib.metadata import version
 from dem.campaign import campaign_cmd
 from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
 from dem.experiments.assessment import assess_cmd
-from dem.experiments.compare_engines.run import compare_engines_cmd
-from dem.experiments.fragility.run import fragility_cmd
-from dem.experiments.friction_map.run import map_cmd
+from dem.experiments.compare_engines import compare_engines_cmd
+from dem.experiments.fragility import fragility_cmd
+from dem.experiments.friction_map import map_cmd
 from dem.experiments.modes import modes_cmd
 from dem.experiments.record import record_cmd
-from dem.experiments.shake.run import animate_cmd, domain_cmd, shake_cmd, threshold_cmd
-from dem.experiments.tilt.run import calibrate_cmd, tilt_cmd
+from dem.experiments.shake import animate_cmd, domain_cmd, shake_cmd, threshold_cmd
+from dem.experiments.tilt import calibrate_cmd, tilt_cmd
 from specimens.errors import ArchdemInputError
 
 # The sub-command modules, in the order they appear in ``archdem --help``; each lives with its
