@@ -60,10 +60,41 @@ def _height(args: argparse.Namespace):
     return Height(args.z_ratio, args.T1, args.floors, args.building_damping)
 
 
+def _masonry(args: argparse.Namespace):
+    """``--masonry FM_MPA,FMT_MPA`` or a named type (its values by the knowledge level of ``--FC``)."""
+    from analytic.frp import MASONRY_TYPES, Masonry, masonry_type
+
+    if args.masonry is None:
+        return None
+    if args.masonry in MASONRY_TYPES:
+        return masonry_type(args.masonry, args.FC)
+    try:
+        vals = [float(x) for x in args.masonry.split(",")]
+    except ValueError:
+        vals = []
+    if len(vals) != 2 or not all(math.isfinite(v) for v in vals):
+        raise ArchdemInputError(f"--masonry takes FM_MPA,FMT_MPA or one of {', '.join(MASONRY_TYPES)}, "
+                                f"got {args.masonry!r}")
+    return Masonry(vals[0] * 1e6, vals[1] * 1e6, "given")
+
+
+def _strip_options(args: argparse.Namespace) -> dict:
+    """The strips' design options besides their description (modulus, fibre, exposure, application, masonry)."""
+    masonry = _masonry(args)
+    if args.frp_modulus is not None and not (math.isfinite(args.frp_modulus) and args.frp_modulus > 0):
+        raise ArchdemInputError(f"--frp-modulus must be a positive number of GPa, got {args.frp_modulus:g}")
+    if masonry is not None and args.frp_modulus is None:
+        raise ArchdemInputError("--masonry needs --frp-modulus (the strips' E_f: debonding depends on it)")
+    return {"modulus": None if args.frp_modulus is None else args.frp_modulus * 1e9, "fibre": args.frp_fibre,
+            "exposure": args.frp_exposure, "application": args.frp_application, "masonry": masonry, "FC": args.FC}
+
+
 def _strips(args: argparse.Namespace):
     from analytic.frp import Strips
 
     if args.frp is None:
+        if args.masonry is not None or args.frp_modulus is not None:
+            raise ArchdemInputError("--masonry and --frp-modulus belong to --frp (the strips they design)")
         return None
     parts = args.frp.split(",")
     try:
@@ -72,7 +103,32 @@ def _strips(args: argparse.Namespace):
         vals = []
     if len(vals) not in (3, 4) or not all(math.isfinite(v) for v in vals):
         raise ArchdemInputError(f"--frp takes STRENGTH_MPA,THICKNESS_MM,WIDTH_MM[,DESIGN_MPA], got {args.frp!r}")
-    return Strips(vals[0] * 1e6, vals[1] * 1e-3, vals[2] * 1e-3, args.frp_face, vals[3] * 1e6 if len(vals) == 4 else None)
+    return Strips(vals[0] * 1e6, vals[1] * 1e-3, vals[2] * 1e-3, args.frp_face, vals[3] * 1e6 if len(vals) == 4 else None,
+                  **_strip_options(args))
+
+
+def _sld_site(args: argparse.Namespace, site):
+    """The SLD hazard (``--sld-ag`` [g], and for NTC 2018 ``--sld-F0``, ``--sld-Tc-star``): the same site's
+    spectrum at the SLD return period."""
+    from analytic.spectra import ntc2018, rebuild
+
+    if args.sld_ag is None:
+        if args.sld_F0 is not None or args.sld_Tc_star is not None:
+            raise ArchdemInputError("--sld-F0 and --sld-Tc-star belong to --sld-ag")
+        return None
+    if args.limit_state.upper() == "SLD":
+        raise ArchdemInputError("--sld-ag is the SLD hazard beside a life-safety one; with --limit-state SLD the "
+                                "spectrum itself is the SLD hazard")
+    if not (math.isfinite(args.sld_ag) and 0 < args.sld_ag * G <= site.ag):
+        raise ArchdemInputError(f"--sld-ag must be in (0, the spectrum's ag = {site.ag / G:.3g}] g, got {args.sld_ag:g}")
+    if args.sld_F0 is not None or args.sld_Tc_star is not None:
+        if site.describe().get("code") != "NTC 2018":
+            raise ArchdemInputError("--sld-F0 and --sld-Tc-star belong to the NTC 2018 spectrum")
+        p = site.params
+        return ntc2018(args.sld_ag * G, args.sld_F0 if args.sld_F0 is not None else p["F0"],
+                       args.sld_Tc_star if args.sld_Tc_star is not None else p["Tc_star"], p["soil"], p["topography"],
+                       p["damping"])
+    return rebuild(site, ag=args.sld_ag * G)
 
 
 def _mechanism(args: argparse.Namespace, arch):
@@ -115,8 +171,7 @@ def _records(args: argparse.Namespace, site, res, arch) -> dict:
 def _run_monument(args: argparse.Namespace, monument) -> int:
     """A monument's configurations (:mod:`specimens.monuments`), unreinforced and with FRP strips,
     against its site (or the spectrum given)."""
-    from analytic.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
-    from analytic.frp import Strips
+    from analytic.assessment import assess_monument, monument_site, monument_strips
     from dem.plotting.assess import hinges_text
 
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
@@ -125,26 +180,38 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
         raise ArchdemInputError(f"{monument.name} is assessed as reconstructed (its own geometry, at ground level, "
                                 f"no records or report): --{given[0].replace('_', '-')} does not apply")
     site = monument_site() if args.spectrum is None else _spectrum(args)
-    strips = _strips(args) or Strips(*NOH_GUMBAD_FRP, face=args.frp_face)
+    if args.sld_ag is not None:
+        raise ArchdemInputError(f"{monument.name} is assessed against its own hazard: --sld-ag does not apply")
+    if args.frp is not None:
+        strips = _strips(args)
+    else:
+        opts = _strip_options(args) if (args.masonry is not None or args.frp_modulus is not None) else {}
+        strips = monument_strips(args.FC, args.frp_face, opts.get("masonry"))
     rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state)
     out = {"id": monument.name, "source": monument.source, "arch": {"e": monument.arch.e, "t": monument.arch.t,
            "Rp": monument.arch.Rp, "width": monument.arch.width, "span": monument.arch.span,
            "rise": monument.arch.rise},
            "configurations": {k: (None if v is None else vars(v)) for k, v in monument.configurations.items()},
-           "density": monument.density, "spectrum": site.describe(), "strips": strips.describe(), "rows": rows}
+           "density": monument.density, "spectrum": site.describe(), "strips": strips.describe(monument.arch.width),
+           "rows": rows}
     if args.json:
         print_json(out)
         return 0
+    sd = strips.describe(monument.arch.width)
     print(f"{monument.name}: {site.describe()['code']} site, PGA {site.pga:.3g} m/s^2 ({site.pga / G:.3f} g); "
-          f"FRP {strips.describe()['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
-          f"on the {strips.face} (design force {strips.force / 1e3:.3g} kN)")
+          f"FRP {sd['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
+          f"on the {strips.face}: design {sd['design_strength_MPa']:.4g} MPa ({sd['governing']}), "
+          f"force {sd['force_N'] / 1e3:.3g} kN")
+
+    def num(v) -> str:
+        return f"{'':>7s}" if v is None else f"{v:7.2f}"
+
     print(f"  {'configuration':18s} {'FRP':4s} {'lambda':>7s} {'e*':>6s} {'a0* [g]':>8s} {'d0* [mm]':>9s} "
-          f"{'SI lin':>7s} {'SI disp':>7s}  hinges")
+          f"{'a0*/PGA':>7s} {'SI lin':>7s} {'SI disp':>7s}  hinges")
     for r in rows:
-        lin = r["safety_index_linear"]
         print(f"  {r['configuration']:18s} {'yes' if r['frp'] else 'no':4s} {r['lambda']:7.4f} {r['e_star']:6.3f} "
-              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {'' if lin is None else f'{lin:7.2f}'} "
-              f"{r['safety_index_displacement']:7.2f}  {hinges_text(r['hinges'])}")
+              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {num(r['activation_over_pga'])} "
+              f"{num(r['safety_index_linear'])} {num(r['safety_index_displacement'])}  {hinges_text(r['hinges'])}")
     return 0
 
 
@@ -156,12 +223,17 @@ def _print(title: str, hinges: list[dict], res) -> None:
     print(f"    alpha0 = {d['alpha0']:.4f}   M* = {d['M_star']:.4g} kg   e* = {d['e_star']:.3f}   "
           f"a0* = {d['a0_star'] / G:.4f} g (FC {d['FC']:g})   d0* = {d['d0_star'] * 1e3:.4g} mm")
     for c in d["checks"]:
-        what = (f"linear, q = {c['q']:g}" if c["kind"] == "linear"
-                else f"displacement, d_u* = {c['d_u_star'] * 1e3:.4g} mm vs demand {c['demand_displacement'] * 1e3:.4g} mm "
-                     f"at T = {c['period']:.3f} s")
+        if c["kind"] == "activation":
+            what = "activation, no q" + ("" if c.get("code_check", True) else " (convention a0*/PGA, not a code check)")
+        elif c["kind"] == "linear":
+            what = f"linear, q = {c['q']:g}"
+        else:
+            what = (f"displacement, d_u* = {c['d_u_star'] * 1e3:.4g} mm vs demand {c['demand_displacement'] * 1e3:.4g} mm "
+                    f"at T = {c['period']:.3f} s")
         print(f"    {c['limit_state']} {what} ({c['where']}): capacity ag {c['capacity_ag'] / G:.3f} g vs "
               f"{c['demand_ag'] / G:.3f} g -> safety index {c['safety_index']:.2f} "
               f"({'verified' if c['verified'] else 'NOT verified'})")
+    print(f"    governing: {d['governing_check']}, safety index {d['safety_index']:.2f}")
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -175,6 +247,7 @@ def _run(args: argparse.Namespace) -> int:
     site = _spectrum(args)
     height = _height(args)
     strips = _strips(args)
+    sld = _sld_site(args, site)
     if args.report is not None:
         if not args.report.lower().endswith(".html"):
             raise ArchdemInputError(f"--report must end in .html, got {args.report!r}")
@@ -182,7 +255,7 @@ def _run(args: argparse.Namespace) -> int:
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
     mech = _mechanism(args, arch)
-    res = assess(mech, site, args.FC, args.q, args.limit_state, height)
+    res = assess(mech, site, args.FC, args.q, args.limit_state, height, sld_site=sld)
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),
            "mechanism": mech.summary(), **res.describe()}
     frp = None
@@ -193,9 +266,10 @@ def _run(args: argparse.Namespace) -> int:
         kw = discretisation_kwargs(args, arch)
         sc = strengthened_collapse(arch, strips, kw.get("density", DEFAULT_DENSITY), kw.get("piers"))
         frp = assess(sc.mechanism, site, args.FC, args.q, args.limit_state, height, alpha0=sc.lam,
-                     extra_force=sc.strip_force)
-        out["frp"] = {"strips": strips.describe(), "lambda": sc.lam, "mechanism": sc.mechanism.summary(),
-                      "hinges": sc.mechanism.summary()["hinges"], **frp.describe()}
+                     extra_force=sc.strip_force, sld_site=sld)
+        out["frp"] = {"strips": strips.describe(arch.width), "lambda": sc.lam, "mechanism": sc.mechanism.summary(),
+                      "hinges": sc.mechanism.summary()["hinges"], "strip_hinges": sc.strip_hinges(),
+                      "crushing": sc.crushing(strips.masonry, args.FC), **frp.describe()}
     if args.records:
         out["records"] = _records(args, site, res, arch)
     if args.report is not None:
@@ -211,7 +285,12 @@ def _run(args: argparse.Namespace) -> int:
           f"{args.limit_state.upper()}, mechanism at {where}")
     _print(f"unreinforced ({mech.label})", out["mechanism"].get("hinges", []), res)
     if frp is not None:
-        _print(f"with FRP strips on the {strips.face} (T = {strips.force / 1e3:.3g} kN)", out["frp"]["hinges"], frp)
+        sd = out["frp"]["strips"]
+        _print(f"with FRP strips on the {strips.face} (f_fd = {sd['design_strength_MPa']:.4g} MPa, {sd['governing']}; "
+               f"T = {sd['force_N'] / 1e3:.3g} kN)", out["frp"]["hinges"], frp)
+        for c in out["frp"]["crushing"] or []:
+            print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
+                  f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'NOT verified'})")
     if "records" in out:
         rec = out["records"]
         print(f"  records matched over {rec['period_range'][0]:.3g}-{rec['period_range'][1]:.3g} s, DEM "
@@ -230,7 +309,7 @@ def _run(args: argparse.Namespace) -> int:
 
 def register(sub) -> None:
     from analytic.assessment import assess
-    from analytic.frp import GAMMA_FRP
+    from analytic.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES
     from analytic.kinematic import CONFIDENCE_FACTORS, Height
     from analytic.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ntc2018
 
@@ -253,9 +332,14 @@ def register(sub) -> None:
     p.add_argument("--damping", type=float, default=default_of(ntc2018, "damping"),
                    help=f"damping ratio of the site spectrum [%%] (default {default_of(ntc2018, 'damping'):g})")
     ls = default_of(assess, "limit_state")
-    p.add_argument("--limit-state", default=ls, choices=("SLV", "SLC", "slv", "slc"),
-                   help=f"the limit state whose hazard the spectrum is: SLV (linear and displacement checks) or SLC "
-                        f"(displacement check) (default {ls})")
+    p.add_argument("--limit-state", default=ls, choices=("SLD", "SLV", "SLC", "sld", "slv", "slc"),
+                   help=f"the limit state whose hazard the spectrum is: SLD (activation check, no q), SLV (linear and "
+                        f"displacement checks) or SLC (displacement check) (default {ls})")
+    p.add_argument("--sld-ag", type=float, default=None,
+                   help="the SLD hazard's ag [g] (same site): adds the activation check (no q) beside SLV or SLC")
+    p.add_argument("--sld-F0", type=float, default=None, help="NTC 2018: F0 of the SLD hazard (default the spectrum's)")
+    p.add_argument("--sld-Tc-star", dest="sld_Tc_star", type=float, default=None,
+                   help="NTC 2018: Tc* [s] of the SLD hazard (default the spectrum's)")
     p.add_argument("--FC", type=float, default=default_of(assess, "FC"),
                    help=f"confidence factor of the knowledge level (LC1 {CONFIDENCE_FACTORS['LC1']:g}, "
                         f"LC2 {CONFIDENCE_FACTORS['LC2']:g}, LC3 {CONFIDENCE_FACTORS['LC3']:g}; "
@@ -269,8 +353,19 @@ def register(sub) -> None:
     p.add_argument("--building-damping", type=float, default=bd,
                    help=f"mechanism at a height: the building's first-mode damping [%%] (default {bd:g})")
     p.add_argument("--frp", default=None, metavar="STRENGTH_MPA,THICKNESS_MM,WIDTH_MM[,DESIGN_MPA]",
-                   help=f"FRP strips along the ring: ultimate strength, equivalent thickness, total width, and the "
-                        f"design (debonding) strength (default strength / {GAMMA_FRP:g})")
+                   help="FRP strips along the ring: characteristic strength, equivalent thickness, total width, and "
+                        "a design strength of your own (default: the guideline's rupture eta_a f_fk / gamma_f, and "
+                        "with --masonry the least of it and the debonding strengths)")
+    p.add_argument("--frp-modulus", type=float, default=None, metavar="GPA", help="the strips' modulus E_f [GPa]")
+    p.add_argument("--frp-fibre", default="carbon", choices=sorted(ETA_A["internal"]), help="fibre (default carbon)")
+    p.add_argument("--frp-exposure", default="external", choices=list(ETA_A),
+                   help="exposure of the environmental factor eta_a (default external)")
+    p.add_argument("--frp-application", default="A", choices=list(GAMMA_F),
+                   help=f"application type of the partial factors (A: gamma_f {GAMMA_F['A']:g}, gamma_fd "
+                        f"{GAMMA_FD['A']:g}; B: {GAMMA_F['B']:g}, {GAMMA_FD['B']:g}; default A)")
+    p.add_argument("--masonry", default=None, metavar="FM_MPA,FMT_MPA|TYPE",
+                   help=f"the substrate's mean compressive and tensile strengths, or a type "
+                        f"({', '.join(MASONRY_TYPES)}): the strips' debonding strengths")
     p.add_argument("--frp-face", default="extrados", choices=("extrados", "intrados"),
                    help="the ring face the strips are bonded to (default extrados)")
     p.add_argument("--records", nargs="+", default=None, metavar="FILE",
