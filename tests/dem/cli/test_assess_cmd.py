@@ -112,3 +112,19 @@ def test_records_matched_and_shaken(short_records, capsys):
     assert rec["period_range"][0] == pytest.approx(0.2 * _check(d, "non-linear")["period"])
     assert all(m["scale"] > 0 and r["peak_d_star"] >= 0 for m, r in zip(rec["matched"], rec["runs"]))
     assert rec["verdict"]["d0_star"] == d["d0_star"]
+
+
+def test_both_limit_states_and_the_trail_in_the_json(capsys):
+    """--sld-ag adds the SLD activation check beside SLV's; every step is in the trail; strips designed on a
+    masonry name their governing strength."""
+    d = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--sld-ag", "0.08", "--frp", "100,0.01,1", "--frp-modulus",
+                       "230", "--masonry", "3,0.3", "--json"])
+    assert set(d["limit_states"]) == {"SLD", "SLV"} and d["limit_states"]["SLD"]["governing"] == "activation"
+    act = next(c for c in d["checks"] if c["limit_state"] == "SLD")
+    sld = ntc2018(act["capacity_ag"], 2.4, 0.3, "C")
+    assert sld.pga == pytest.approx(d["a0_star"], rel=1e-8) and act["demand_ag"] == pytest.approx(0.08 * G)
+    symbols = {s["symbol"] for s in d["trail"]}
+    assert {"alpha0", "M*", "e*", "a0*", "d0*", "SLV non-linear: T_s", "SLD activation: safety index"} <= symbols
+    s = d["frp"]["strips"]
+    assert s["governing"] in ("rupture", "intermediate debonding") and s["design"]["f_end"]["unit"] == "MPa"
+    assert s["masonry"]["fm_MPa"] == 3 and d["frp"]["crushing"] and "trail" in d["frp"]
