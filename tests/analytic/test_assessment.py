@@ -80,3 +80,42 @@ def test_the_trail_carries_every_step():
         assert tr[f"{ls} {kind}: safety index"]["value"] == _by(r, ls, kind)["safety_index"]
     assert tr["SLV non-linear: T_s"]["value"] == _by(r, "SLV", "non-linear")["period"]
     assert tr["SLV non-linear: Se(T_s)"]["value"] > 0 and tr["d0*"]["value"] == pytest.approx(0.05)
+
+
+# the published limit analyses of the Noh Gumbad vaults: hinge polar angles about O [rad], load along +x
+# (as in benchmarks/fit_noh_gumbad.py, which fits the geometry to their multipliers)
+NOH_PUBLISHED = {"ring alone": (0.009, 0.787, 2.096, 3.138),
+                 "half-height piers": (-0.698, 0.865, 1.655, 4.127),
+                 "full-height piers": (-0.987, 0.654, 1.633, 4.361)}
+
+
+def _noh_hinges(name):
+    from analytic.frp import strengthened_collapse
+    from specimens.monuments import NOH_GUMBAD
+
+    sc = strengthened_collapse(NOH_GUMBAD.arch, None, NOH_GUMBAD.density, NOH_GUMBAD.configurations[name], load_sign=1)
+    got = [h["angle_rad"] for h in sc.mechanism.summary()["hinges"]]
+    return got, sorted(NOH_PUBLISHED[name], reverse=True)  # archdem lists hinges left to right: decreasing angle
+
+
+def test_the_noh_gumbad_ring_hinges_against_the_published_ones():
+    """The fit forces the multiplier and chose the ring's pointedness by its two interior hinges (least
+    squared error 0.025 rad^2, docs/physics/assessment.md §7); the springing hinges are not fitted: they
+    must fall within the interior hinges' RMS error, sqrt(0.025 / 2) = 0.11 rad, of the published ones."""
+    got, pub = _noh_hinges("ring alone")
+    res = [g - p for g, p in zip(got, pub)]
+    assert res[1] ** 2 + res[2] ** 2 <= 0.025
+    tol = math.sqrt(0.025 / 2)
+    assert abs(res[0]) <= tol and abs(res[3]) <= tol
+
+
+def test_the_noh_gumbad_pier_hinges_against_the_published_ones():
+    """On piers the fit forces the heights by the multipliers and the width by the inner hinges; the
+    documented errors: the right-pier hinge within 0.035 rad, the ring's within 0.27 rad, and the study's
+    left hinge in the left pier (beta > pi) where archdem's least mechanism keeps it in the ring."""
+    for name in ("half-height piers", "full-height piers"):
+        got, pub = _noh_hinges(name)
+        # 0.035 as documented to three decimals (the residual is 0.0350)
+        assert abs(got[3] - pub[3]) <= 0.0355 and got[3] < 0  # the right pier's outer foot
+        assert all(abs(g - p) <= 0.27 for g, p in zip(got[1:3], pub[1:3]))
+        assert pub[0] > math.pi > got[0]  # the known difference, kept visible
