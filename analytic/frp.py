@@ -332,6 +332,21 @@ class StrengthenedCollapse:
     strips: Strips | None
     forces: dict | None = None
     lp_forces: dict | None = None
+    tie: object = None  # an analytic.ties.Tie
+    tie_link: object = None  # its analytic.ties.TieLink on the fine cut
+    tie_lp_force: float | None = None
+
+    def tie_force(self, phi: float) -> float:
+        """Generalised force ``W'(phi)`` [J/rad] of the tie resisting the mechanism (yielding where it lengthens)."""
+        if self.tie_link is None:
+            return 0.0
+        from analytic.ties import tie_force
+
+        return tie_force(self.mechanism, self.assembly, self.hinges, self.tie_link, phi)
+
+    def extra_force(self, phi: float) -> float:
+        """``W'(phi)`` [J/rad] of the strips and the tie together."""
+        return self.strip_force(phi) + self.tie_force(phi)
 
     def strip_force(self, phi: float) -> float:
         """Generalised force ``W'(phi)`` [J/rad] of the strips resisting the mechanism at rotation ``phi``:
@@ -380,12 +395,13 @@ class StrengthenedCollapse:
 
 
 def strengthened_collapse(arch, strips: Strips | None, density: float = DEFAULT_DENSITY, piers=None,
-                          n_ring: int = N_RING, load_sign: int = -1) -> StrengthenedCollapse:
+                          n_ring: int = N_RING, load_sign: int = -1, tie=None) -> StrengthenedCollapse:
     """The strengthened arch's (on ``piers`` or not; ``strips`` None: unreinforced) least multiplier
     and mechanism: the static LP with the strips' tension on the fine cut (``n_ring`` voussoirs per side; on piers the cut of
     :func:`analytic.limit_piers.continuous_on_piers`), and the mechanism through its hinges (four, or
     one when the strips hold the ring whole and it turns on a springing); ``load_sign`` -1: loads along
-    -x (those of a positive ground acceleration), +1 along +x."""
+    -x (those of a positive ground acceleration), +1 along +x; ``tie``: an :class:`analytic.ties.Tie`
+    across the structure."""
     from analytic.limit_discrete import solve_lp
     from analytic.linkage import four_bar_through
 
@@ -396,12 +412,24 @@ def strengthened_collapse(arch, strips: Strips | None, density: float = DEFAULT_
 
         asm = fine_cut(arch, piers, n_ring, density, 1.0)
     forces = None if strips is None else joint_forces(asm, strips)
+    link = None
+    if tie is not None:
+        from analytic.ties import tie_link
+
+        link = tie_link(asm, tie)
     lp = solve_lp(asm, math.inf, math.inf, load_sign=load_sign,
-                  tension=None if strips is None else tension_of(asm, strips, forces))
+                  tension=None if strips is None else tension_of(asm, strips, forces), ties=() if link is None else (link,))
     if not lp.success:
         raise ArchdemInputError(f"strengthened arch: {lp.message}")
     if len(lp.hinges) not in (1, 4):
+        why = ""
+        if link is not None and lp.tie_forces[0] < (1 - 1e-6) * link.force:
+            why = (f" (lambda = {lp.lam:.4g}: the tie holds without yielding, {lp.tie_forces[0] / 1e3:.4g} of "
+                   f"{link.force / 1e3:.4g} kN, and keeps its length; a weaker tie yields)")
         raise ArchdemInputError(f"the strengthened arch's mechanism has {len(lp.hinges)} hinges, neither one nor "
-                                f"four ({', '.join(f'{n}:{f}' for n, f in lp.hinges)})")
-    fb = four_bar_through(asm, lp.hinges, name="four-bar (fine cut)" if strips is None else "four-bar (with FRP)")
-    return StrengthenedCollapse(float(lp.lam), lp.hinges, fb, asm, strips, forces, lp.forces)
+                                f"four ({', '.join(f'{n}:{f}' for n, f in lp.hinges)}){why}; the kinematic "
+                                f"assessment needs one of one or four hinges")
+    what = " and ".join(w for w, x in (("FRP", strips), ("a tie", tie)) if x is not None)
+    fb = four_bar_through(asm, lp.hinges, name=f"four-bar (with {what})" if what else "four-bar (fine cut)")
+    return StrengthenedCollapse(float(lp.lam), lp.hinges, fb, asm, strips, forces, lp.forces, tie, link,
+                                lp.tie_forces[0] if link is not None else None)

@@ -107,6 +107,21 @@ def _strips(args: argparse.Namespace):
                   **_strip_options(args))
 
 
+def _tie(args: argparse.Namespace):
+    """``--tie HEIGHT,AREA_MM2,FY_MPA[,PRESTRESS_KN]``."""
+    from analytic.ties import Tie
+
+    if args.tie is None:
+        return None
+    try:
+        vals = [float(x) for x in args.tie.split(",")]
+    except ValueError:
+        vals = []
+    if len(vals) not in (3, 4) or not all(math.isfinite(v) for v in vals):
+        raise ArchdemInputError(f"--tie takes HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN], got {args.tie!r}")
+    return Tie(vals[0], vals[1] * 1e-6, vals[2] * 1e6, vals[3] * 1e3 if len(vals) == 4 else 0.0)
+
+
 def _sld_site(args: argparse.Namespace, site):
     """The SLD hazard (``--sld-ag`` [g], and for NTC 2018 ``--sld-F0``, ``--sld-Tc-star``): the same site's
     spectrum at the SLD return period."""
@@ -175,7 +190,7 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
     from dem.plotting.assess import hinges_text
 
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
-                         "records", "report", "z_ratio") if getattr(args, k, None) is not None]
+                         "records", "report", "z_ratio", "tie") if getattr(args, k, None) is not None]
     if given:
         raise ArchdemInputError(f"{monument.name} is assessed as reconstructed (its own geometry, at ground level, "
                                 f"no records or report): --{given[0].replace('_', '-')} does not apply")
@@ -247,6 +262,7 @@ def _run(args: argparse.Namespace) -> int:
     site = _spectrum(args)
     height = _height(args)
     strips = _strips(args)
+    tie = _tie(args)
     sld = _sld_site(args, site)
     if args.report is not None:
         if not args.report.lower().endswith(".html"):
@@ -259,23 +275,28 @@ def _run(args: argparse.Namespace) -> int:
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),
            "mechanism": mech.summary(), **res.describe()}
     frp = None
-    if strips is not None:
+    key = "frp" if strips is not None else "tie"
+    if strips is not None or tie is not None:
         from analytic.frp import strengthened_collapse
         from specimens.blocks import DEFAULT_DENSITY
 
         kw = discretisation_kwargs(args, arch)
-        sc = strengthened_collapse(arch, strips, kw.get("density", DEFAULT_DENSITY), kw.get("piers"))
+        sc = strengthened_collapse(arch, strips, kw.get("density", DEFAULT_DENSITY), kw.get("piers"), tie=tie)
         frp = assess(sc.mechanism, site, args.FC, args.q, args.limit_state, height, alpha0=sc.lam,
-                     extra_force=sc.strip_force, sld_site=sld)
-        out["frp"] = {"strips": strips.describe(arch.width), "lambda": sc.lam, "mechanism": sc.mechanism.summary(),
-                      "hinges": sc.mechanism.summary()["hinges"], "strip_hinges": sc.strip_hinges(),
-                      "crushing": sc.crushing(strips.masonry, args.FC), **frp.describe()}
+                     extra_force=sc.extra_force, sld_site=sld)
+        out[key] = {"strips": None if strips is None else strips.describe(arch.width), "lambda": sc.lam,
+                    "mechanism": sc.mechanism.summary(), "hinges": sc.mechanism.summary()["hinges"],
+                    "strip_hinges": sc.strip_hinges(),
+                    "crushing": None if strips is None else sc.crushing(strips.masonry, args.FC),
+                    "tie": None if tie is None else {**tie.describe(), "force_at_collapse_kN": sc.tie_lp_force / 1e3,
+                                                     "anchors_m": [sc.tie_link.p_a.tolist(), sc.tie_link.p_b.tolist()]},
+                    **frp.describe()}
     if args.records:
         out["records"] = _records(args, site, res, arch)
     if args.report is not None:
         from dem.plotting.assess import write_report
 
-        write_report(args.report, label, site, mech, res, out, frp, out.get("frp"))
+        write_report(args.report, label, site, mech, res, out, frp, out.get(key))
         out["report"] = args.report
     if args.json:
         print_json(out)
@@ -285,10 +306,16 @@ def _run(args: argparse.Namespace) -> int:
           f"{args.limit_state.upper()}, mechanism at {where}")
     _print(f"unreinforced ({mech.label})", out["mechanism"].get("hinges", []), res)
     if frp is not None:
-        sd = out["frp"]["strips"]
-        _print(f"with FRP strips on the {strips.face} (f_fd = {sd['design_strength_MPa']:.4g} MPa, {sd['governing']}; "
-               f"T = {sd['force_N'] / 1e3:.3g} kN)", out["frp"]["hinges"], frp)
-        for c in out["frp"]["crushing"] or []:
+        parts = []
+        if strips is not None:
+            sd = out[key]["strips"]
+            parts.append(f"FRP strips on the {strips.face}, f_fd = {sd['design_strength_MPa']:.4g} MPa "
+                         f"({sd['governing']}), T = {sd['force_N'] / 1e3:.3g} kN")
+        if tie is not None:
+            parts.append(f"a tie at {tie.height:g} m yielding at {tie.force / 1e3:.4g} kN "
+                         f"({out[key]['tie']['force_at_collapse_kN']:.4g} kN at collapse)")
+        _print("with " + " and ".join(parts), out[key]["hinges"], frp)
+        for c in out[key]["crushing"] or []:
             print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
                   f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'NOT verified'})")
     if "records" in out:
@@ -368,6 +395,10 @@ def register(sub) -> None:
                         f"({', '.join(MASONRY_TYPES)}): the strips' debonding strengths")
     p.add_argument("--frp-face", default="extrados", choices=("extrados", "intrados"),
                    help="the ring face the strips are bonded to (default extrados)")
+    p.add_argument("--tie", default=None, metavar="HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN]",
+                   help="a steel tie across the structure at a height above the springing line (0: the springings or "
+                        "the pier tops; negative: in the piers), of cross-section area and yield strength; "
+                        "rigid-plastic in the analyses (the prestress is recorded)")
     p.add_argument("--records", nargs="+", default=None, metavar="FILE",
                    help="records (.AT2, .smc, ESM, CSV) matched to the site spectrum and shaken on the DEM")
     p.add_argument("--match-periods", default=None, metavar="LO,HI",

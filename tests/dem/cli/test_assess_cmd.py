@@ -128,3 +128,14 @@ def test_both_limit_states_and_the_trail_in_the_json(capsys):
     s = d["frp"]["strips"]
     assert s["governing"] in ("rupture", "intermediate debonding") and s["design"]["f_end"]["unit"] == "MPa"
     assert s["masonry"]["fm_MPa"] == 3 and d["frp"]["crushing"] and "trail" in d["frp"]
+
+
+def test_a_tie_at_mid_pier(capsys):
+    """A yielding tie half-way down the piers raises the multiplier; its force and anchors are reported."""
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
+    d = _json(capsys, ["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1", "--tie=-0.2,1,2", "--json"])
+    t = d["tie"]
+    assert t["lambda"] > d["alpha0"] and t["tie"]["yield_force_kN"] == pytest.approx(2e-3)
+    assert t["tie"]["force_at_collapse_kN"] == pytest.approx(2e-3, rel=1e-6) and t["strips"] is None
+    (xa, ya), (xb, yb) = t["tie"]["anchors_m"]
+    assert xa < 0 < xb and ya == pytest.approx(-0.2) and yb == pytest.approx(-0.2)
