@@ -73,7 +73,10 @@ def test_frp_strips_and_the_report(tmp_path, capsys):
     assert f["lambda"] > d["alpha0"] and f["alpha0"] == f["lambda"] and f["e_star"] <= 1
     assert f["safety_index"] > d["safety_index"]
     page = rep.read_text()
-    assert "With FRP strips" in page and page.count("data:image/png;base64,") == 2
+    assert "Strengthened: FRP strips" in page and page.count("data:image/png;base64,") == 3
+    # the calculation an engineer follows: the strengthened mechanism's trail, the unreinforced one's, the strips' design
+    assert "<h2>Calculation (strengthened mechanism)</h2>" in page and page.count("class='calc'") == 3
+    assert "(sum m dx)^2 / sum m dx^2" in page and "convention a0*/PGA, not a code check" in page
     assert main(["assess", "Sh06-Sd015", *NTC, "--report", str(rep)]) == 2  # never overwritten
     assert "exists" in capsys.readouterr().err
 
