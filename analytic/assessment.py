@@ -193,7 +193,8 @@ def assess_monument(monument, site, strips=None, FC: float = CONFIDENCE_FACTORS[
         for s in (None, strips) if strips is not None else (None,):
             # loads along +x: the frame of the published hinge angles
             sc = strengthened_collapse(monument.arch, s, monument.density, piers, load_sign=1)
-            r = assess(sc.mechanism, site, FC, q, limit_state, alpha0=sc.lam, extra_force=sc.extra_force)
+            r = assess(sc.mechanism, site, FC, q, limit_state, alpha0=sc.lam,
+                       extra_force=sc.extra_force if s is not None else None)
             by_kind = {c["kind"]: c for c in r.checks}
             row = {"configuration": name, "frp": s is not None, "lambda": sc.lam,
                    "hinges": sc.mechanism.summary()["hinges"], "mechanism": sc.mechanism.label,

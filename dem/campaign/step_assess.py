@@ -24,6 +24,12 @@ def step_assess(ctx: CampaignContext, d: Path) -> dict:
               "safety_index_displacement": r["safety_index_displacement"], "verified": r["verified"],
               "hinges_rad": " ".join(f"{h['angle_rad']:.3f}" for h in r["hinges"])} for r in rows]
     write_csv(d / "assess.csv", table)
+    # the calculation of the governing configuration (least governing index), line by line
+    gov = min(rows, key=lambda r: r["safety_index"])
+    calc = [{"quantity": st["symbol"],
+             "value": " ".join(f"{v:.5g}" for v in st["value"]) if isinstance(st["value"], list) else st["value"],
+             "unit": st["unit"], "formula": st["formula"]} for st in gov["trail"]]
+    write_csv(d / "calculation.csv", calc)
     findings = []
     for name in NOH_GUMBAD.configurations:
         bare, frp = (next(r for r in table if r["configuration"] == name and r["frp"] == f) for f in (False, True))
@@ -39,6 +45,9 @@ def step_assess(ctx: CampaignContext, d: Path) -> dict:
                    f"{design['design_strength_MPa']:.4g} MPa ({design['governing']} on "
                    f"{design['masonry']['name']}; E_f {design['modulus_GPa']:g} GPa assumed), "
                    f"{design['force_N'] / 1e3:.3g} kN per joint.",
-        "tables": [{"name": "assess", "title": "Noh Gumbad: code-based assessment", "csv": "assess/assess.csv"}],
+        "tables": [{"name": "assess", "title": "Noh Gumbad: code-based assessment", "csv": "assess/assess.csv"},
+                   {"name": "assess_calculation", "csv": "assess/calculation.csv",
+                    "title": f"Noh Gumbad, calculation of the governing configuration ({gov['configuration']}, "
+                             f"{'with' if gov['frp'] else 'without'} FRP): every step with its unit and formula"}],
         "findings": findings,
     }
