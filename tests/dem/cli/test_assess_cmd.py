@@ -101,6 +101,14 @@ def test_the_noh_gumbad_example(capsys):
         assert bare["lambda"] == pytest.approx(lam, abs=1e-3)
         assert frp["lambda"] > bare["lambda"] and frp["safety_index"] > bare["safety_index"]
     assert d["spectrum"]["ag"] == pytest.approx(3.67) and d["strips"]["width_mm"] == pytest.approx(680)
+    # the strips designed to the guideline on the assumed masonry: intermediate debonding governs every held hinge
+    assert d["strips"]["governing"] == "intermediate debonding" and d["strips"]["force_N"] < 0.85 * 1964 / 1.1 * 0.047 * 680
+    assert all(h["mode"] == "intermediate debonding" for r in d["rows"] if r["frp"] for h in r["strip_hinges"])
+    # published convention a0*/PGA beside the code checks: half the linear index with q = 2 on rock
+    for r in d["rows"]:
+        assert r["activation_over_pga"] == pytest.approx(r["safety_index_linear"] / 2, rel=1e-6)
+    strong = _json(capsys, ["assess", "noh-gumbad", "--masonry", "8,0.8", "--json"])
+    assert strong["strips"]["masonry"]["fm_MPa"] == 8 and strong["strips"]["force_N"] > d["strips"]["force_N"]
     assert main(["assess", "noh-gumbad", "--pier-height", "2", "--pier-width", "1"]) == 2
     assert "its own geometry" in capsys.readouterr().err
 
@@ -142,3 +150,14 @@ def test_a_tie_at_mid_pier(capsys):
     assert t["tie"]["force_at_collapse_kN"] == pytest.approx(2e-3, rel=1e-6) and t["strips"] is None
     (xa, ya), (xb, yb) = t["tie"]["anchors_m"]
     assert xa < 0 < xb and ya == pytest.approx(-0.2) and yb == pytest.approx(-0.2)
+
+
+def test_records_on_the_tied_structure(short_records, capsys):
+    """With a tie (and no strips) the records shake the tied structure, its tie in the engine, against the tied
+    assessment."""
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
+    d = _json(capsys, ["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1", "--tie=-0.2,1,2",
+                       "--records", short_records[0], "--workers", "1", "--json"])
+    rec = d["records"]
+    assert "tied structure" in rec["dem_note"] and rec["verdict"]["d0_star"] == d["tie"]["d0_star"]
+    assert rec["runs"][0]["peak_d_star"] >= 0

@@ -158,6 +158,8 @@ from dem.cli import main
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--tie", "0.05,100,235,100"], "tie prestress must be"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--tie", "0.05,100"], "--tie takes"),
     (["assess", "noh-gumbad", "--tie", "0,100,235"], "--tie does not apply"),
+    (["assess", "noh-gumbad", "--frp-modulus", "200"], "--frp-modulus belongs to --frp"),
+    (["assess", "noh-gumbad", "--sld-ag", "0.1"], "--sld-ag does not apply"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--z-ratio", "0.5"], "--z-ratio, --T1 and --floors"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--z-ratio", "1.5", "--T1", "0.4", "--floors", "3"],
      "height ratio z/H must be in (0, 1]"),
