@@ -3,7 +3,6 @@ activation check (SLD), the linear and displacement checks of the life-safety st
 displacement check of SLC, the governing safety index, and the calculation trail."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Callable
 

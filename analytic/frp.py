@@ -16,7 +16,7 @@ the least governs each joint. A design strength given by the user wins.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 

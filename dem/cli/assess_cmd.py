@@ -351,7 +351,7 @@ def _run(args: argparse.Namespace) -> int:
 
 def register(sub) -> None:
     from analytic.assessment import assess
-    from analytic.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES
+    from analytic.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, Strips
     from analytic.kinematic import CONFIDENCE_FACTORS, Height
     from analytic.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ntc2018
 
@@ -399,12 +399,13 @@ def register(sub) -> None:
                         "a design strength of your own (default: the guideline's rupture eta_a f_fk / gamma_f, and "
                         "with --masonry the least of it and the debonding strengths)")
     p.add_argument("--frp-modulus", type=float, default=None, metavar="GPA", help="the strips' modulus E_f [GPa]")
-    p.add_argument("--frp-fibre", default="carbon", choices=sorted(ETA_A["internal"]), help="fibre (default carbon)")
-    p.add_argument("--frp-exposure", default="external", choices=list(ETA_A),
-                   help="exposure of the environmental factor eta_a (default external)")
-    p.add_argument("--frp-application", default="A", choices=list(GAMMA_F),
+    fibre, exposure, application = (default_of(Strips, k) for k in ("fibre", "exposure", "application"))
+    p.add_argument("--frp-fibre", default=fibre, choices=sorted(ETA_A["internal"]), help=f"fibre (default {fibre})")
+    p.add_argument("--frp-exposure", default=exposure, choices=list(ETA_A),
+                   help=f"exposure of the environmental factor eta_a (default {exposure})")
+    p.add_argument("--frp-application", default=application, choices=list(GAMMA_F),
                    help=f"application type of the partial factors (A: gamma_f {GAMMA_F['A']:g}, gamma_fd "
-                        f"{GAMMA_FD['A']:g}; B: {GAMMA_F['B']:g}, {GAMMA_FD['B']:g}; default A)")
+                        f"{GAMMA_FD['A']:g}; B: {GAMMA_F['B']:g}, {GAMMA_FD['B']:g}; default {application})")
     p.add_argument("--masonry", default=None, metavar="FM_MPA,FMT_MPA|TYPE",
                    help=f"the substrate's mean compressive and tensile strengths, or a type "
                         f"({', '.join(MASONRY_TYPES)}): the strips' debonding strengths")

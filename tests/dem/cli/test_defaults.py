@@ -17,6 +17,7 @@ def _lib():
     from analytic.assessment import assess
     from analytic.calibration import CALIBRATION_FILE
     from analytic.domain import failure_domain
+    from analytic.frp import Strips
     from analytic.kinematic import Height
     from analytic.modes import POISSON, modes
     from analytic.spectra import ntc2018
@@ -49,7 +50,8 @@ def _lib():
         "assess": {"soil": default_of(ntc2018, "soil"), "topography": default_of(ntc2018, "topography"),
                    "damping": default_of(ntc2018, "damping"), "FC": default_of(assess, "FC"),
                    "q": default_of(assess, "q"), "limit_state": default_of(assess, "limit_state"),
-                   "building_damping": default_of(Height, "damping1"), "engine": s.engine},
+                   "building_damping": default_of(Height, "damping1"), "engine": s.engine,
+                   **{f"frp_{k}": default_of(Strips, k) for k in ("fibre", "exposure", "application")}},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
                 "mu_base": default_of(catalogue_map, "mu_base"), "refine": default_of(catalogue_map, "refine"),
