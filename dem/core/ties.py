@@ -36,7 +36,7 @@ class TieSpec:
 
 
 def tie_spec(link, area: float, prestress: float = 0.0, modulus: float = STEEL_MODULUS) -> TieSpec:
-    """The DEM tie of an :class:`analytic.ties.TieLink` (anchors in the plane z = 0) of cross-section
+    """The DEM tie of an :class:`analytic.limit.ties.TieLink` (anchors in the plane z = 0) of cross-section
     ``area`` [m^2]: stiffness ``E A / L0``."""
     pa = np.array([float(link.p_a[0]), float(link.p_a[1]), 0.0])
     pb = np.array([float(link.p_b[0]), float(link.p_b[1]), 0.0])

@@ -10,8 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from dem.campaign.context import CampaignContext
+from dem.campaign.report import _summary_html
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 BROWSER = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
@@ -106,8 +107,6 @@ def test_the_report_fits_the_page(tmp_path):
 def test_the_summary_reads_the_steps_tables():
     """Per specimen the laboratory's, the limit analysis's and the DEM's lambda and the least shake threshold,
     read from the steps' tables; a step not run leaves its column blank."""
-    from dem.campaign.report import _summary_html
-
     tables = {"lab": [{"id": "A", "lambda_lab_mean": "0.41", "lambda_dem_effective_mean": "0.39",
                        "lambda_lp_effective": "0.40"}],
               "analytic": [{"id": "A", "lambda_discrete_glued": "0.42"}, {"id": "B", "lambda_discrete_glued": "0.3"}],

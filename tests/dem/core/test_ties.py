@@ -1,15 +1,18 @@
 """The DEM's tie: its elastic-perfectly-plastic law by hand, and a pair of piers with a tie tilted in
 both engines against the closed form (docs/physics/assessment.md#8-tie-rods)."""
 import dataclasses
-import math
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from analytic.ties import Tie, tie_link
+from analytic.limit.ties import Tie, tie_link
+from dem.core.model import Model, _base, _specs
+from dem.core.settings import Settings
 from dem.core.ties import TieForces, TieSpec, tie_spec
+from dem.experiments.tilt.run import tilt
 from specimens.constants import NO_SLIDING_MU, G
+from specimens.frame import rocking_frame
 
 
 def test_the_tie_law_by_hand():
@@ -30,9 +33,6 @@ def test_the_tie_law_by_hand():
 
 
 def _pair_model(bL, bR, h, span):
-    from dem.core.model import Model, _base, _specs
-    from specimens.frame import rocking_frame
-
     left, right = rocking_frame(bL, h, span, 0.01), rocking_frame(bR, h, span, 0.01)
     pair = SimpleNamespace(bodies=(left.bodies[0], dataclasses.replace(right.bodies[2], index=1)),
                            joints=(left.joints[0], dataclasses.replace(right.joints[3], index=1, a=1)),
@@ -44,12 +44,9 @@ def _pair_model(bL, bR, h, span):
 @pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
 @pytest.mark.parametrize("T", [1.0, 5.0])
 def test_a_pair_of_piers_with_a_tie_tilts_at_the_closed_form(engine, T):
-    """The closed form of tests/analytic/test_ties.py: the right pier alone (the tie yielding,
+    """The closed form of tests/analytic/limit/test_ties.py: the right pier alone (the tie yielding,
     lambda_R = b_R / h + T z / (m_R g h)) or both piers together (the tie unstrained), the least. The
     elastic tie (steel, E A / L0) lets the right pier turn by f_y L0 / (E z) = 2e-3 rad before it yields."""
-    from dem.core.settings import Settings
-    from dem.experiments.tilt import tilt
-
     if engine == "mujoco":
         pytest.importorskip("mujoco", reason="the mujoco extra is not installed (pip install -e '.[mujoco]')")
     bL, bR, h, z = 0.1, 0.03, 0.2, 0.3
