@@ -137,6 +137,16 @@ class LinearKinematic:
                                        "demand_acceleration": peak_acceleration(site, height),
                                        "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
 
+    def activation(self, site, height: Height | None = None, limit_state: str = "SLD") -> dict:
+        """The activation check (no behaviour factor): the ``ag`` at which the peak acceleration where
+        the mechanism stands equals ``a0*``, against the site's ``ag`` (``site`` the hazard of
+        ``limit_state``: SLD for the code's damage-limitation check)."""
+        ag_act = capacity_ag(site, lambda s: peak_acceleration(s, height), self.a0_star)
+        return _verdict(site, ag_act, {"kind": "activation", "limit_state": limit_state, "q": 1.0,
+                                       "activation_acceleration": self.a0_star,
+                                       "demand_acceleration": peak_acceleration(site, height),
+                                       "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
+
     def describe(self) -> dict:
         return {"alpha0": self.alpha0, "M_star": self.M_star, "e_star": self.e_star, "a0_star": self.a0_star,
                 "FC": self.FC, "mass": self.mass}
@@ -150,6 +160,15 @@ def _participation(mech) -> tuple[np.ndarray, np.ndarray, float]:
     if not den > 0 or not float(np.sum(m * dx)) > 0:
         raise ArchdemInputError("the mechanism moves no mass along the load: no participating mass")
     return m, dx, float(np.sum(m * dx)) ** 2 / den / float(m.sum())
+
+
+def virtual_displacements(mech) -> list[dict]:
+    """Per body: mass ``m`` [kg], centroid virtual displacements ``dx`` (along the load), ``dy`` [m per rad of
+    the first link] and rotation ``dtheta`` [-] at rest: the velocity map the codes' M* and e* are built on."""
+    m = np.asarray(mech.masses, dtype=float)
+    v = mech.velocity_map(0.0)
+    return [{"body": k, "m": float(m[k]), "dx": float(-mech.direction * v[k, 0]), "dy": float(v[k, 1]),
+             "dtheta": float(v[k, 2])} for k in range(len(m))]
 
 
 def linear_kinematic(mech, FC: float = CONFIDENCE_FACTORS["LC1"], alpha0: float | None = None) -> LinearKinematic:
@@ -218,9 +237,13 @@ class CapacityCurve:
             return float(np.max(Se * (Ts / (2 * math.pi)) ** 2))
 
         d_dem = demand(site)
+        if height is None:
+            Se_T = float(rebuild(site, damping=xi).Se(T))
+        else:
+            Se_T = float(floor_spectrum(site, T, xi, height.z_ratio, height.T1, height.floors, height.damping1))
         return _verdict(site, capacity_ag(site, demand, d_u),
                         {"kind": "non-linear", "limit_state": ls, "d_u_star": d_u, "a_u_star": a_u, "period": T,
-                         "damping": xi, "demand_displacement": d_dem, "capacity_displacement": d_u,
+                         "damping": xi, "Se_at_period": Se_T, "demand_displacement": d_dem, "capacity_displacement": d_u,
                          "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
 
     def describe(self) -> dict:

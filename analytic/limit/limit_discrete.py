@@ -206,6 +206,7 @@ class LPResult:
     mu_joint: float = math.inf
     mu_base: float = math.inf
     contact: float = 1.0
+    tie_forces: tuple[float, ...] = ()
 
     @property
     def success(self) -> bool:
@@ -218,16 +219,18 @@ class LPResult:
 
 
 def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: float | None = None,
-                     tension: np.ndarray | None = None) -> LPResult:
+                     tension: np.ndarray | None = None, ties: Sequence = ()) -> LPResult:
     """Maximise ``lambda`` for a :class:`ContactModel` (see :func:`solve_lp`); ``tension`` (n_joints, 2):
     the tensile force [N] each joint may carry at its intrados and extrados force points (strips bonded
-    across it), else none."""
+    across it), else none; ``ties``: :class:`analytic.limit.ties.TieLink` tension members between two bodies,
+    each pulling them together with a force from 0 to its ``force`` [N]."""
     s = _check_sign(load_sign)
     nb, nj = len(model.mass), len(model.joint_names)
     W = float(model.mass.sum())
     L = float(length_scale or np.ptp(np.vstack([model.p1, model.p2, model.centroid]), axis=0).max() or 1.0)
     # unknowns: N (2 nj: end 1, end 2 per joint), V (2 nj), lambda; forces in units of g * W
-    nv = 4 * nj + 1
+    nt = len(ties)
+    nv = 4 * nj + 1 + nt
     iN = lambda j, k: 2 * j + k  # noqa: E731
     iV = lambda j, k: 2 * nj + 2 * j + k  # noqa: E731
     il = 4 * nj
@@ -246,6 +249,13 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
                     A[3 * body, col] += sgn * d[0]
                     A[3 * body + 1, col] += sgn * d[1]
                     A[3 * body + 2, col] += sgn * (r[0] * d[1] - r[1] * d[0])
+    for t, tie in enumerate(ties):
+        u = tie.direction
+        for body, p, sgn in ((tie.a, tie.p_a, 1.0), (tie.b, tie.p_b, -1.0)):
+            r = np.asarray(p, float) / L - c[body]
+            A[3 * body, il + 1 + t] += sgn * u[0]
+            A[3 * body + 1, il + 1 + t] += sgn * u[1]
+            A[3 * body + 2, il + 1 + t] += sgn * (r[0] * u[1] - r[1] * u[0])
     for body in range(nb):
         m = model.mass[body] / W
         A[3 * body, il] = s * m
@@ -270,6 +280,7 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
     else:  # a strip's tension lets the normal force at its end go below zero, down to -T
         bounds = [(-float(tension[j, k]) / (G * W), None) for j in range(nj) for k in range(2)]
     bounds += [(None, None)] * (2 * nj + 1)
+    bounds += [(0.0, float(t.force) / (G * W)) for t in ties]
     res = linprog(cost, A_ub=A_ub, b_ub=b_ub, A_eq=A, b_eq=rhs, bounds=bounds, method="highs",
                   options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
     common = dict(load_sign=s, mu_joint=float(np.nanmax(model.mu)) if nj else math.inf,
@@ -332,7 +343,8 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
         states[name], faces[name] = st, face
     del g_w
     msg = "optimal" if lam >= 0 else f"the structure cannot stand under self-weight (lambda = {lam:.4g} < 0)"
-    return LPResult(lam, 0, msg, lam >= 0, states, faces, forces, motion, **common)
+    return LPResult(lam, 0, msg, lam >= 0, states, faces, forces, motion, **common,
+                    tie_forces=tuple(float(res.x[il + 1 + t]) * F for t in range(nt)))
 
 
 def solve_lp(
@@ -341,6 +353,7 @@ def solve_lp(
     mu_base: float,
     load_sign: int = +1,
     tension: np.ndarray | None = None,
+    ties: Sequence = (),
 ) -> LPResult:
     """Static limit analysis of a discretised arch: the largest ``lambda`` with equilibrium.
 
@@ -349,12 +362,14 @@ def solve_lp(
     (the assembly's ``contact``).
     Geometry that cannot stand under self-weight gives ``stands = False`` (``lam < 0`` or an
     infeasible LP with ``lam = nan``), never an exception. ``tension`` (n_joints, 2) [N]: what
-    strips let each joint carry in tension at its intrados / extrados force point.
+    strips let each joint carry in tension at its intrados / extrados force point; ``ties``: tension
+    members between bodies (:func:`solve_contact_lp`).
     """
     model = contact_model(assembly, mu_joint, mu_base)
-    res = solve_contact_lp(model, load_sign, length_scale=assembly.length_scale, tension=tension)
+    res = solve_contact_lp(model, load_sign, length_scale=assembly.length_scale, tension=tension, ties=ties)
     return LPResult(res.lam, res.status, res.message, res.stands, res.joint_states, res.joint_hinge_face,
-                    res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(assembly.contact))
+                    res.forces, res.motion, res.load_sign, float(mu_joint), float(mu_base), float(assembly.contact),
+                    res.tie_forces)
 
 
 # ---------------------------------------------------------------------------------------------

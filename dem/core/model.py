@@ -93,6 +93,7 @@ class Model:
     crown: int
     source: dict = field(default_factory=dict)
     assembly: Any = field(default=None, repr=False, compare=False)
+    ties: tuple = ()  # dem.core.ties.TieSpec: elastic-perfectly-plastic ties between bodies
 
     @property
     def n_bodies(self) -> int:

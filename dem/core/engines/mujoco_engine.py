@@ -45,6 +45,7 @@ from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
 from dem.core.settings import Settings
+from dem.core.ties import TieForces
 from specimens.mesh import prism
 
 
@@ -266,13 +267,27 @@ class MuJoCoEngine(Engine):
         ndof = 3 if self._planar else 6
         adr = self._m.jnt_dofadr[self._m.body_jntadr[self._bid]]
         self._dof = (adr[:, None] + np.arange(ndof)[None, :]).ravel()
+        self._ties = None
+        if model.ties:
+            self._ties = TieForces(model.ties, self._c0)
         mujoco.mj_forward(self._m, self._d)
 
     def set_gravity(self, vec) -> None:
         self._m.opt.gravity[:] = accel(vec)
 
     def step(self, n: int = 1) -> None:
-        self._mj.mj_step(self._m, self._d, nstep=n * self._nsub)
+        if self._ties is None:
+            self._mj.mj_step(self._m, self._d, nstep=n * self._nsub)
+            return
+        d = self._d
+        for _ in range(n * self._nsub):  # the ties' forces, from the poses before each sub-step, at the bodies' centres of mass
+            pos, R = self.poses()
+            d.xfrc_applied[:] = 0.0
+            for k, point, f in self._ties.update(pos, R):
+                bid = self._bid[k]
+                d.xfrc_applied[bid, :3] += f
+                d.xfrc_applied[bid, 3:] += np.cross(point - d.xipos[bid], f)
+            self._mj.mj_step(self._m, d, nstep=1)
 
     def drive_base(self, x: float, v: float) -> None:
         if self._table is None:

@@ -50,6 +50,7 @@ from dem.core.engines.inputs import QUAT_GRID, accel, on_grid, principal_frame, 
 from dem.core.model import Model
 from dem.core.provenance import package_version
 from dem.core.settings import Settings
+from dem.core.ties import TieForces
 from specimens.mesh import prism
 
 
@@ -244,6 +245,9 @@ class PyBulletEngine(Engine):
             self._compliant(model, settings)
         self._planar = settings.planar
         self._z0 = np.array([b.centroid[2] for b in model.bodies])
+        self._ties = None
+        if model.ties:
+            self._ties = TieForces(model.ties, np.array([b.centroid for b in model.bodies]))
 
     def _compliant(self, model: Model, settings: Settings) -> None:
         """Springs and dashpots at the contact points (dem.core.contact): Bullet combines two bodies'
@@ -282,6 +286,15 @@ class PyBulletEngine(Engine):
 
     def step(self, n: int = 1) -> None:
         p = self._p
+        if self._ties is not None:  # the ties' forces, from the poses before each step (they last one step)
+            for _ in range(n):
+                pos, R = self.poses()
+                for k, point, f in self._ties.update(pos, R):
+                    p.applyExternalForce(self._ids[k], -1, f.tolist(), point.tolist(), self._pb.WORLD_FRAME)
+                p.stepSimulation()
+                if self._planar:
+                    self._project()
+            return
         if not self._planar:
             for _ in range(n):
                 p.stepSimulation()

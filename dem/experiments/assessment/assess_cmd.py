@@ -6,10 +6,11 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.codes.assessment import NOH_GUMBAD_FRP, assess, assess_monument, monument_site
-from analytic.codes.frp import GAMMA_FRP, Strips, strengthened_collapse
+from analytic.codes.assessment import assess, assess_monument, monument_site, monument_strips
+from analytic.codes.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, Masonry, Strips, masonry_type
 from analytic.codes.kinematic import CONFIDENCE_FACTORS, Height
-from analytic.motions.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum
+from analytic.limit.ties import Tie
+from analytic.motions.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum, rebuild
 from dem.common.options import (
     add_arch_arguments,
     add_engine_argument,
@@ -21,7 +22,6 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.settings import Settings
-from specimens.blocks import DEFAULT_DENSITY
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.io import writable_file
@@ -63,8 +63,37 @@ def _height(args: argparse.Namespace):
     return Height(args.z_ratio, args.T1, args.floors, args.building_damping)
 
 
+def _masonry(args: argparse.Namespace):
+    """``--masonry FM_MPA,FMT_MPA`` or a named type (its values by the knowledge level of ``--FC``)."""
+    if args.masonry is None:
+        return None
+    if args.masonry in MASONRY_TYPES:
+        return masonry_type(args.masonry, args.FC)
+    try:
+        vals = [float(x) for x in args.masonry.split(",")]
+    except ValueError:
+        vals = []
+    if len(vals) != 2 or not all(math.isfinite(v) for v in vals):
+        raise ArchdemInputError(f"--masonry takes FM_MPA,FMT_MPA or one of {', '.join(MASONRY_TYPES)}, "
+                                f"got {args.masonry!r}")
+    return Masonry(vals[0] * 1e6, vals[1] * 1e6, "given")
+
+
+def _strip_options(args: argparse.Namespace) -> dict:
+    """The strips' design options besides their description (modulus, fibre, exposure, application, masonry)."""
+    masonry = _masonry(args)
+    if args.frp_modulus is not None and not (math.isfinite(args.frp_modulus) and args.frp_modulus > 0):
+        raise ArchdemInputError(f"--frp-modulus must be a positive number of GPa, got {args.frp_modulus:g}")
+    if masonry is not None and args.frp_modulus is None:
+        raise ArchdemInputError("--masonry needs --frp-modulus (the strips' E_f: debonding depends on it)")
+    return {"modulus": None if args.frp_modulus is None else args.frp_modulus * 1e9, "fibre": args.frp_fibre,
+            "exposure": args.frp_exposure, "application": args.frp_application, "masonry": masonry, "FC": args.FC}
+
+
 def _strips(args: argparse.Namespace):
     if args.frp is None:
+        if args.masonry is not None or args.frp_modulus is not None:
+            raise ArchdemInputError("--masonry and --frp-modulus belong to --frp (the strips they design)")
         return None
     parts = args.frp.split(",")
     try:
@@ -73,7 +102,43 @@ def _strips(args: argparse.Namespace):
         vals = []
     if len(vals) not in (3, 4) or not all(math.isfinite(v) for v in vals):
         raise ArchdemInputError(f"--frp takes STRENGTH_MPA,THICKNESS_MM,WIDTH_MM[,DESIGN_MPA], got {args.frp!r}")
-    return Strips(vals[0] * 1e6, vals[1] * 1e-3, vals[2] * 1e-3, args.frp_face, vals[3] * 1e6 if len(vals) == 4 else None)
+    return Strips(vals[0] * 1e6, vals[1] * 1e-3, vals[2] * 1e-3, args.frp_face, vals[3] * 1e6 if len(vals) == 4 else None,
+                  **_strip_options(args))
+
+
+def _tie(args: argparse.Namespace):
+    """``--tie HEIGHT,AREA_MM2,FY_MPA[,PRESTRESS_KN]``."""
+    if args.tie is None:
+        return None
+    try:
+        vals = [float(x) for x in args.tie.split(",")]
+    except ValueError:
+        vals = []
+    if len(vals) not in (3, 4) or not all(math.isfinite(v) for v in vals):
+        raise ArchdemInputError(f"--tie takes HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN], got {args.tie!r}")
+    return Tie(vals[0], vals[1] * 1e-6, vals[2] * 1e6, vals[3] * 1e3 if len(vals) == 4 else 0.0)
+
+
+def _sld_site(args: argparse.Namespace, site):
+    """The SLD hazard (``--sld-ag`` [g], and for NTC 2018 ``--sld-F0``, ``--sld-Tc-star``): the same site's
+    spectrum at the SLD return period."""
+    if args.sld_ag is None:
+        if args.sld_F0 is not None or args.sld_Tc_star is not None:
+            raise ArchdemInputError("--sld-F0 and --sld-Tc-star belong to --sld-ag")
+        return None
+    if args.limit_state.upper() == "SLD":
+        raise ArchdemInputError("--sld-ag is the SLD hazard beside a life-safety one; with --limit-state SLD the "
+                                "spectrum itself is the SLD hazard")
+    if not (math.isfinite(args.sld_ag) and 0 < args.sld_ag * G <= site.ag):
+        raise ArchdemInputError(f"--sld-ag must be in (0, the spectrum's ag = {site.ag / G:.3g}] g, got {args.sld_ag:g}")
+    if args.sld_F0 is not None or args.sld_Tc_star is not None:
+        if site.describe().get("code") != "NTC 2018":
+            raise ArchdemInputError("--sld-F0 and --sld-Tc-star belong to the NTC 2018 spectrum")
+        p = site.params
+        return ntc2018(args.sld_ag * G, args.sld_F0 if args.sld_F0 is not None else p["F0"],
+                       args.sld_Tc_star if args.sld_Tc_star is not None else p["Tc_star"], p["soil"], p["topography"],
+                       p["damping"])
+    return rebuild(site, ag=args.sld_ag * G)
 
 
 def _period_range(args: argparse.Namespace) -> tuple[float, float] | None:
@@ -93,31 +158,45 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
     from dem.experiments.assessment.figure import hinges_text
 
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
-                         "records", "report", "z_ratio") if getattr(args, k, None) is not None]
+                         "records", "report", "z_ratio", "tie") if getattr(args, k, None) is not None]
     if given:
         raise ArchdemInputError(f"{monument.name} is assessed as reconstructed (its own geometry, at ground level, "
                                 f"no records or report): --{given[0].replace('_', '-')} does not apply")
     site = monument_site() if args.spectrum is None else _spectrum(args)
-    strips = _strips(args) or Strips(*NOH_GUMBAD_FRP, face=args.frp_face)
+    if args.sld_ag is not None:
+        raise ArchdemInputError(f"{monument.name} is assessed against its own hazard: --sld-ag does not apply")
+    if args.frp is not None:
+        strips = _strips(args)
+    else:
+        if args.frp_modulus is not None:
+            raise ArchdemInputError(f"{monument.name}'s strips are described by the study (E_f assumed): "
+                                    f"--frp-modulus belongs to --frp")
+        strips = monument_strips(args.FC, args.frp_face, _masonry(args))
     rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state)
     out = {"id": monument.name, "source": monument.source, "arch": {"e": monument.arch.e, "t": monument.arch.t,
            "Rp": monument.arch.Rp, "width": monument.arch.width, "span": monument.arch.span,
            "rise": monument.arch.rise},
            "configurations": {k: (None if v is None else vars(v)) for k, v in monument.configurations.items()},
-           "density": monument.density, "spectrum": site.describe(), "strips": strips.describe(), "rows": rows}
+           "density": monument.density, "spectrum": site.describe(), "strips": strips.describe(monument.arch.width),
+           "rows": rows}
     if args.json:
         print_json(out)
         return 0
+    sd = strips.describe(monument.arch.width)
     print(f"{monument.name}: {site.describe()['code']} site, PGA {site.pga:.3g} m/s^2 ({site.pga / G:.3f} g); "
-          f"FRP {strips.describe()['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
-          f"on the {strips.face} (design force {strips.force / 1e3:.3g} kN)")
+          f"FRP {sd['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
+          f"on the {strips.face}: design {sd['design_strength_MPa']:.4g} MPa ({sd['governing']}), "
+          f"force {sd['force_N'] / 1e3:.3g} kN")
+
+    def num(v) -> str:
+        return f"{'':>7s}" if v is None else f"{v:7.2f}"
+
     print(f"  {'configuration':18s} {'FRP':4s} {'lambda':>7s} {'e*':>6s} {'a0* [g]':>8s} {'d0* [mm]':>9s} "
-          f"{'SI lin':>7s} {'SI disp':>7s}  hinges")
+          f"{'a0*/PGA':>7s} {'SI lin':>7s} {'SI disp':>7s}  hinges")
     for r in rows:
-        lin = r["safety_index_linear"]
         print(f"  {r['configuration']:18s} {'yes' if r['frp'] else 'no':4s} {r['lambda']:7.4f} {r['e_star']:6.3f} "
-              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {'' if lin is None else f'{lin:7.2f}'} "
-              f"{r['safety_index_displacement']:7.2f}  {hinges_text(r['hinges'])}")
+              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {num(r['activation_over_pga'])} "
+              f"{num(r['safety_index_linear'])} {num(r['safety_index_displacement'])}  {hinges_text(r['hinges'])}")
     return 0
 
 
@@ -130,12 +209,17 @@ def _print(title: str, hinges: list[dict], res) -> None:
     print(f"    alpha0 = {d['alpha0']:.4f}   M* = {d['M_star']:.4g} kg   e* = {d['e_star']:.3f}   "
           f"a0* = {d['a0_star'] / G:.4f} g (FC {d['FC']:g})   d0* = {d['d0_star'] * 1e3:.4g} mm")
     for c in d["checks"]:
-        what = (f"linear, q = {c['q']:g}" if c["kind"] == "linear"
-                else f"displacement, d_u* = {c['d_u_star'] * 1e3:.4g} mm vs demand {c['demand_displacement'] * 1e3:.4g} mm "
-                     f"at T = {c['period']:.3f} s")
+        if c["kind"] == "activation":
+            what = "activation, no q" + ("" if c.get("code_check", True) else " (convention a0*/PGA, not a code check)")
+        elif c["kind"] == "linear":
+            what = f"linear, q = {c['q']:g}"
+        else:
+            what = (f"displacement, d_u* = {c['d_u_star'] * 1e3:.4g} mm vs demand {c['demand_displacement'] * 1e3:.4g} mm "
+                    f"at T = {c['period']:.3f} s")
         print(f"    {c['limit_state']} {what} ({c['where']}): capacity ag {c['capacity_ag'] / G:.3f} g vs "
               f"{c['demand_ag'] / G:.3f} g -> safety index {c['safety_index']:.2f} "
               f"({'verified' if c['verified'] else 'NOT verified'})")
+    print(f"    governing: {d['governing_check']}, safety index {d['safety_index']:.2f}")
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -149,6 +233,8 @@ def _run(args: argparse.Namespace) -> int:
     site = _spectrum(args)
     height = _height(args)
     strips = _strips(args)
+    tie = _tie(args)
+    sld = _sld_site(args, site)
     if args.report is not None:
         if not args.report.lower().endswith(".html"):
             raise ArchdemInputError(f"--report must end in .html, got {args.report!r}")
@@ -157,25 +243,28 @@ def _run(args: argparse.Namespace) -> int:
         raise ArchdemInputError("--match-periods and --workers belong to --records")
     a = assess_with_records(arch, args.records or (), site, FC=args.FC, q=args.q, limit_state=args.limit_state,
                             height=height, period_range=_period_range(args), settings=Settings(engine=args.engine),
-                            workers=args.workers, **discretisation_kwargs(args, arch))
+                            workers=args.workers, strips=strips, tie=tie, sld_site=sld,
+                            **discretisation_kwargs(args, arch))
     mech, res = a.mechanism, a.assessment
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),
            "mechanism": mech.summary(), **res.describe()}
-    frp = None
-    if strips is not None:
-        kw = discretisation_kwargs(args, arch)
-        sc = strengthened_collapse(arch, strips, kw.get("density", DEFAULT_DENSITY), kw.get("piers"))
-        frp = assess(sc.mechanism, site, args.FC, args.q, args.limit_state, height, alpha0=sc.lam,
-                     extra_force=sc.strip_force)
-        out["frp"] = {"strips": strips.describe(), "lambda": sc.lam, "mechanism": sc.mechanism.summary(),
-                      "hinges": sc.mechanism.summary()["hinges"], **frp.describe()}
+    frp, sc = a.strengthened_assessment, a.strengthened
+    key = "frp" if strips is not None else "tie"
+    if sc is not None:
+        out[key] = {"strips": None if strips is None else strips.describe(arch.width), "lambda": sc.lam,
+                    "mechanism": sc.mechanism.summary(), "hinges": sc.mechanism.summary()["hinges"],
+                    "strip_hinges": sc.strip_hinges(),
+                    "crushing": None if strips is None else sc.crushing(strips.masonry, args.FC),
+                    "tie": None if tie is None else {**tie.describe(), "force_at_collapse_kN": sc.tie_lp_force / 1e3,
+                                                     "anchors_m": [sc.tie_link.p_a.tolist(), sc.tie_link.p_b.tolist()]},
+                    **frp.describe()}
     if a.records is not None:
         out["records"] = a.records.describe()
     if args.report is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.assessment.figure import write_report
 
-        write_report(args.report, label, site, mech, res, out, frp, out.get("frp"))
+        write_report(args.report, label, site, mech, res, out, frp, out.get(key))
         out["report"] = args.report
     if args.json:
         print_json(out)
@@ -185,18 +274,29 @@ def _run(args: argparse.Namespace) -> int:
           f"{args.limit_state.upper()}, mechanism at {where}")
     _print(f"unreinforced ({mech.label})", out["mechanism"].get("hinges", []), res)
     if frp is not None:
-        _print(f"with FRP strips on the {strips.face} (T = {strips.force / 1e3:.3g} kN)", out["frp"]["hinges"], frp)
+        parts = []
+        if strips is not None:
+            sd = out[key]["strips"]
+            parts.append(f"FRP strips on the {strips.face}, f_fd = {sd['design_strength_MPa']:.4g} MPa "
+                         f"({sd['governing']}), T = {sd['force_N'] / 1e3:.3g} kN")
+        if tie is not None:
+            parts.append(f"a tie at {tie.height:g} m yielding at {tie.force / 1e3:.4g} kN "
+                         f"({out[key]['tie']['force_at_collapse_kN']:.4g} kN at collapse)")
+        _print("with " + " and ".join(parts), out[key]["hinges"], frp)
+        for c in out[key]["crushing"] or []:
+            print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
+                  f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'NOT verified'})")
     if "records" in out:
         rec = out["records"]
         print(f"  records matched over {rec['period_range'][0]:.3g}-{rec['period_range'][1]:.3g} s, DEM "
-              f"({rec['engine']}, unreinforced):")
+              f"({rec['engine']}, {'tied' if a.records.tied else 'unreinforced'}):")
         for m, r in zip(rec["matched"], rec["runs"]):
             print(f"    {m['record'][:48]:48s} x{m['scale']:.3g} (misfit {m['misfit_mean_ln']:.2f}): "
                   f"{'COLLAPSE' if r['collapsed'] else 'stands'}, peak d* {r['peak_d_star'] * 1e3:.3g} mm")
         v = rec["verdict"]
         print(f"    mean peak d* {v['mean_peak_d_star'] * 1e3:.3g} mm vs d_u* {v['du_star'] * 1e3:.3g} mm, "
               f"{v['n_reach_d0']} of {v['n_records']} reach d0* -> {'verified' if v['verified'] else 'NOT verified'}"
-              f" (code check: {'verified' if res.verified else 'NOT verified'})")
+              f" (code check: {'verified' if (frp if a.records.tied else res).verified else 'NOT verified'})")
     if args.report is not None:
         print(f"  report: {args.report}")
     return 0
@@ -222,9 +322,14 @@ def register(sub) -> None:
     p.add_argument("--damping", type=float, default=default_of(ntc2018, "damping"),
                    help=f"damping ratio of the site spectrum [%%] (default {default_of(ntc2018, 'damping'):g})")
     ls = default_of(assess, "limit_state")
-    p.add_argument("--limit-state", default=ls, choices=("SLV", "SLC", "slv", "slc"),
-                   help=f"the limit state whose hazard the spectrum is: SLV (linear and displacement checks) or SLC "
-                        f"(displacement check) (default {ls})")
+    p.add_argument("--limit-state", default=ls, choices=("SLD", "SLV", "SLC", "sld", "slv", "slc"),
+                   help=f"the limit state whose hazard the spectrum is: SLD (activation check, no q), SLV (linear and "
+                        f"displacement checks) or SLC (displacement check) (default {ls})")
+    p.add_argument("--sld-ag", type=float, default=None,
+                   help="the SLD hazard's ag [g] (same site): adds the activation check (no q) beside SLV or SLC")
+    p.add_argument("--sld-F0", type=float, default=None, help="NTC 2018: F0 of the SLD hazard (default the spectrum's)")
+    p.add_argument("--sld-Tc-star", dest="sld_Tc_star", type=float, default=None,
+                   help="NTC 2018: Tc* [s] of the SLD hazard (default the spectrum's)")
     p.add_argument("--FC", type=float, default=default_of(assess, "FC"),
                    help=f"confidence factor of the knowledge level (LC1 {CONFIDENCE_FACTORS['LC1']:g}, "
                         f"LC2 {CONFIDENCE_FACTORS['LC2']:g}, LC3 {CONFIDENCE_FACTORS['LC3']:g}; "
@@ -238,10 +343,26 @@ def register(sub) -> None:
     p.add_argument("--building-damping", type=float, default=bd,
                    help=f"mechanism at a height: the building's first-mode damping [%%] (default {bd:g})")
     p.add_argument("--frp", default=None, metavar="STRENGTH_MPA,THICKNESS_MM,WIDTH_MM[,DESIGN_MPA]",
-                   help=f"FRP strips along the ring: ultimate strength, equivalent thickness, total width, and the "
-                        f"design (debonding) strength (default strength / {GAMMA_FRP:g})")
+                   help="FRP strips along the ring: characteristic strength, equivalent thickness, total width, and "
+                        "a design strength of your own (default: the guideline's rupture eta_a f_fk / gamma_f, and "
+                        "with --masonry the least of it and the debonding strengths)")
+    p.add_argument("--frp-modulus", type=float, default=None, metavar="GPA", help="the strips' modulus E_f [GPa]")
+    fibre, exposure, application = (default_of(Strips, k) for k in ("fibre", "exposure", "application"))
+    p.add_argument("--frp-fibre", default=fibre, choices=sorted(ETA_A["internal"]), help=f"fibre (default {fibre})")
+    p.add_argument("--frp-exposure", default=exposure, choices=list(ETA_A),
+                   help=f"exposure of the environmental factor eta_a (default {exposure})")
+    p.add_argument("--frp-application", default=application, choices=list(GAMMA_F),
+                   help=f"application type of the partial factors (A: gamma_f {GAMMA_F['A']:g}, gamma_fd "
+                        f"{GAMMA_FD['A']:g}; B: {GAMMA_F['B']:g}, {GAMMA_FD['B']:g}; default {application})")
+    p.add_argument("--masonry", default=None, metavar="FM_MPA,FMT_MPA|TYPE",
+                   help=f"the substrate's mean compressive and tensile strengths, or a type "
+                        f"({', '.join(MASONRY_TYPES)}): the strips' debonding strengths")
     p.add_argument("--frp-face", default="extrados", choices=("extrados", "intrados"),
                    help="the ring face the strips are bonded to (default extrados)")
+    p.add_argument("--tie", default=None, metavar="HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN]",
+                   help="a steel tie across the structure at a height above the springing line (0: the springings or "
+                        "the pier tops; negative: in the piers), of cross-section area and yield strength; "
+                        "rigid-plastic in the analyses (the prestress is recorded)")
     p.add_argument("--records", nargs="+", default=None, metavar="FILE",
                    help="records (.AT2, .smc, ESM, CSV) matched to the site spectrum and shaken on the DEM")
     p.add_argument("--match-periods", default=None, metavar="LO,HI",

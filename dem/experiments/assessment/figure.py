@@ -17,8 +17,10 @@ from specimens.io import atomic_path
 _CSS = ("body{font-family:system-ui,sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
         "h1{border-bottom:2px solid #8a6d3b}table{border-collapse:collapse;font-size:13px;margin:0.8em 0}"
         "th,td{border:1px solid #bbb;padding:3px 7px;text-align:right}th{background:#f3efe6}"
-        "td:first-child,th:first-child{text-align:left}img{max-width:480px;border:1px solid #ddd;margin:0.3em}"
-        ".no{color:#a00;font-weight:bold}.yes{color:#070;font-weight:bold}.meta{font-size:12px;color:#555}")
+        "td:first-child,th:first-child{text-align:left}img{max-width:480px;width:100%;border:1px solid #ddd;margin:0.3em}"
+        ".no{color:#a00;font-weight:bold}.yes{color:#070;font-weight:bold}.meta{font-size:12px;color:#555;"
+        "overflow-wrap:anywhere}.wrap{max-width:100%;overflow-x:auto}table.calc td{text-align:left}"
+        "table.calc td:nth-child(2){text-align:right;white-space:nowrap}")
 
 
 def hinges_text(hinges: list[dict]) -> str:
@@ -50,24 +52,30 @@ def capacity_figure(res, site, frp=None):
 
     fig = Figure(figsize=(6, 4))
     ax = fig.subplots()
-    for r, col, lab in ((res, "k", "unreinforced"), (frp, "C0", "with FRP")):
+    for r, col, lab in ((res, "k", "unreinforced"), (frp, "C0", "strengthened")):
         if r is None:
             continue
         c = r.curve
         ax.plot(c.d_star * 1e3, c.a_star / G, color=col, lw=2, label=f"capacity, {lab}")
         ax.plot([0, c.d0_star * 1e3], [c.a0_star / G, 0], color=col, lw=0.8, ls=":")
-        chk = next(x for x in r.checks if x["kind"] == "non-linear")
-        ax.plot([chk["d_u_star"] * 1e3], [chk["a_u_star"] / G], "o", color=col)
-        ax.annotate(f"{chk['limit_state']} d_u*", (chk["d_u_star"] * 1e3, chk["a_u_star"] / G), fontsize=8,
-                    xytext=(4, 4), textcoords="offset points")
-    chk = next(x for x in res.checks if x["kind"] == "non-linear")
-    dem = rebuild(site, damping=chk["damping"])
+        for chk in (x for x in r.checks if x["kind"] == "non-linear"):
+            ax.plot([chk["d_u_star"] * 1e3], [chk["a_u_star"] / G], "o", color=col)
+            ax.annotate(f"{chk['limit_state']} d_u*", (chk["d_u_star"] * 1e3, chk["a_u_star"] / G), fontsize=8,
+                        xytext=(4, 4), textcoords="offset points")
+    chk = next((x for x in res.checks if x["kind"] == "non-linear"), None)
+    xi = chk["damping"] if chk is not None else 5.0
+    dem = rebuild(site, damping=xi)
     T = np.linspace(1e-3, dem.t_max, 600)
-    ax.plot(dem.SDe(T) * 1e3, dem.Se(T) / G, "C3--", label=f"site demand, {chk['damping']:g} % damping")
+    ax.plot(dem.SDe(T) * 1e3, dem.Se(T) / G, "C3--", label=f"site demand, {xi:g} % damping")
     dmax = max(res.curve.d0_star, frp.curve.d0_star if frp is not None else 0) * 1e3 * 1.1
-    Tl = chk["period"]
-    d = np.linspace(0, dmax, 50)
-    ax.plot(d, d * 1e-3 * (2 * math.pi / Tl) ** 2 / G, color="0.6", lw=0.8, label=f"period of the check {Tl:.2f} s")
+    if chk is not None:
+        Tl = chk["period"]
+        d = np.linspace(0, dmax, 50)
+        ax.plot(d, d * 1e-3 * (2 * math.pi / Tl) ** 2 / G, color="0.6", lw=0.8, label=f"period of the check {Tl:.2f} s")
+    for c in res.checks:  # the activation and linear checks' demands: horizontal lines a = demand / q
+        if c["kind"] in ("activation", "linear"):
+            ax.axhline(c["demand_acceleration"] / c.get("q", 1.0) / G, color="C2" if c["kind"] == "activation" else "C1",
+                       lw=0.8, ls="-.", label=f"{c['limit_state']} {c['kind']}: demand / q")
     top = max(res.curve.a0_star, frp.curve.a0_star if frp is not None else 0) / G * 1.3
     ax.set(xlim=(0, dmax), ylim=(0, top), xlabel="d* [mm]", ylabel="a* [g]",
            title="capacity against demand (equivalent oscillator)")
@@ -82,14 +90,75 @@ def _png(fig) -> str:
     return base64.b64encode(buf.getvalue()).decode()
 
 
-def _checks_table(checks: list[dict]) -> str:
+_KIND = {"activation": "activation (no q)", "linear": "linear (q)", "non-linear": "displacement"}
+
+
+def _checks_table(checks: list[dict], limit_states: dict | None = None) -> str:
+    """The checks side by side: each with its demand, capacity and safety index; the convention rows
+    (activation against a life-safety hazard) marked as such; each limit state's governing check."""
+    def demand(c):
+        if c["kind"] == "non-linear":
+            return f"d {c['demand_displacement'] * 1e3:.4g} mm vs d_u* {c['d_u_star'] * 1e3:.4g} mm (T_s {c['period']:.3f} s)"
+        return f"a {c['demand_acceleration'] / G:.4f} g vs a0*/q {c['activation_acceleration'] / c.get('q', 1.0) / G:.4f} g"
+
     rows = "".join(
-        f"<tr><td>{c['limit_state']} {c['kind']}</td><td>{html.escape(c['where'])}</td>"
+        f"<tr><td>{c['limit_state']} {_KIND.get(c['kind'], c['kind'])}"
+        f"{'' if c.get('code_check', True) else ' — convention a0*/PGA, not a code check'}</td>"
+        f"<td>{html.escape(c['where'])}</td><td>{demand(c)}</td>"
         f"<td>{c['capacity_ag'] / G:.3f}</td><td>{c['demand_ag'] / G:.3f}</td><td>{c['safety_index']:.2f}</td>"
         f"<td class='{'yes' if c['verified'] else 'no'}'>{'verified' if c['verified'] else 'NOT verified'}</td></tr>"
         for c in checks)
-    return ("<table><tr><th>check</th><th>where</th><th>capacity ag [g]</th><th>site ag [g]</th><th>safety index</th>"
-            "<th></th></tr>" + rows + "</table>")
+    gov = "".join(f"<li>{ls}: governing {_KIND.get(d['governing'], d['governing'])}, safety index "
+                  f"{d['safety_index']:.2f}</li>" for ls, d in (limit_states or {}).items())
+    return ("<div class='wrap'><table><tr><th>check</th><th>where</th><th>demand</th><th>capacity ag [g]</th>"
+            "<th>site ag [g]</th><th>safety index</th><th></th></tr>" + rows + "</table></div>"
+            + (f"<ul>{gov}</ul>" if gov else ""))
+
+
+def _calculation(trail: list[dict]) -> str:
+    """The trail as a table an engineer follows line by line."""
+    def val(v):
+        if isinstance(v, bool):
+            return "yes" if v else "no"
+        if isinstance(v, (list, tuple)):
+            return ", ".join(f"{x:.4g}" for x in v)
+        return "–" if v is None else f"{v:.5g}"
+
+    rows = "".join(f"<tr><td>{html.escape(s['symbol'])}</td><td>{val(s['value'])}</td><td>{html.escape(s['unit'])}</td>"
+                   f"<td>{html.escape(s['formula'])}</td></tr>" for s in trail)
+    return ("<div class='wrap'><table class='calc'><tr><th>quantity</th><th>value</th><th>unit</th><th>formula</th></tr>"
+            + rows + "</table></div>")
+
+
+def mechanism_figure(mech, title: str):
+    """The mechanism at rest and displaced, with each body's virtual displacement (centroid, arrows)."""
+    fig = Figure(figsize=(6, 3.6))
+    ax = fig.subplots()
+    phi = 0.25 * mech.phi_cr if mech.phi_cr > 0 else 0.05
+    rest, moved = mech.body_states(0.0), mech.body_states(phi)
+    size = max(1e-9, max(abs(b.x) for b in rest) + max(abs(b.y) for b in rest))
+    scale = 0.25 * size / max(1e-12, max(math.hypot(b.dx, b.dy) for b in rest))
+    pts = getattr(mech, "points", None) or [getattr(mech, "pivot", (0.0, 0.0))]
+    ax.plot([p[0] for p in pts], [p[1] for p in pts], "ks", ms=5, label="hinges")
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    for k, (b0, b1) in enumerate(zip(rest, moved)):
+        tip = (b0.x + scale * b0.dx, b0.y + scale * b0.dy)
+        xs += [b0.x, b1.x, tip[0]]
+        ys += [b0.y, b1.y, tip[1]]
+        ax.plot([b0.x], [b0.y], "o", color=f"C{k}")
+        ax.plot([b1.x], [b1.y], "x", color=f"C{k}")
+        ax.annotate("", tip, (b0.x, b0.y), arrowprops={"arrowstyle": "->", "color": f"C{k}"}, annotation_clip=False)
+        ax.annotate(f"body {k}: ({b0.dx:.3g}, {b0.dy:.3g}) m/rad", (b0.x, b0.y), fontsize=7, xytext=(4, -10),
+                    textcoords="offset points")
+    pad = 0.08 * size
+    ax.set_xlim(min(xs) - pad, max(xs) + 3 * pad)
+    ax.set_ylim(min(ys) - pad, max(ys) + pad)
+    ax.set_aspect("equal")
+    ax.set(xlabel="x [m]", ylabel="y [m]", title=f"{title}\ncentroids at rest (o) and at phi = {phi:.3g} rad (x); "
+                                               f"virtual displacements per unit phi (arrows)")
+    ax.title.set_fontsize(8)
+    fig.tight_layout()
+    return fig
 
 
 def _figures_table(d: dict) -> str:
@@ -100,8 +169,8 @@ def _figures_table(d: dict) -> str:
 
 def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, frp_out: dict | None = None) -> None:
     """One self-contained HTML page: site, mechanism, figures, checks, the verdict (never overwrites)."""
-    chk = next(x for x in res.checks if x["kind"] == "non-linear")
-    verdict = (f"<p>Governing safety index <b>{res.safety_index:.2f}</b>: "
+    chk = next((x for x in res.checks if x["kind"] == "non-linear"), None)
+    verdict = (f"<p>Governing safety index <b>{res.safety_index:.2f}</b> ({html.escape(out['governing_check'])}): "
                f"<span class='{'yes' if res.verified else 'no'}'>{'verified' if res.verified else 'NOT verified'}"
                f"</span>.</p>")
     parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>archdem assessment {html.escape(label)}"
@@ -109,17 +178,41 @@ def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, fr
              "<p class='meta'>Site: " + html.escape(json.dumps(out["spectrum"])) + "</p>",
              "<p class='meta'>Mechanism: " + html.escape(mech.label) + ", hinges "
              + html.escape(hinges_text(out["mechanism"].get("hinges", [])))
-             + "</p>", "<h2>Unreinforced</h2>", _figures_table(out), _checks_table(out["checks"])]
+             + "</p>", "<h2>Unreinforced</h2>", _figures_table(out), _checks_table(out["checks"], out["limit_states"]),
+             "<p class='meta'>Conventions: the activation check has no behaviour factor (SLD: against the SLD "
+             "hazard); the linear check divides the activation by q against the SLV hazard; an index quoted as "
+             "a0*/PGA is the activation against the life-safety hazard's PGA on rock, reported here as a "
+             "convention, not a code check.</p>"]
     if frp is not None and frp_out is not None:
-        parts += [f"<h2>With FRP strips ({html.escape(frp_out['strips']['face'])}, design force "
-                  f"{frp_out['strips']['force_N'] / 1e3:.3g} kN)</h2>",
+        what = []
+        if frp_out.get("strips"):
+            st = frp_out["strips"]
+            what.append(f"FRP strips on the {html.escape(st['face'])}, f_fd {st['design_strength_MPa']:.4g} MPa "
+                        f"({html.escape(st['governing'])}), {st['force_N'] / 1e3:.3g} kN per joint")
+        if frp_out.get("tie"):
+            t = frp_out["tie"]
+            what.append(f"a tie at {t['height_m']:g} m yielding at {t['yield_force_kN']:.4g} kN")
+        parts += [f"<h2>Strengthened: {'; '.join(what)}</h2>",
                   "<p class='meta'>Hinges " + html.escape(hinges_text(frp_out["hinges"]))
-                  + "; d0* from the curve of gravity alone (the strips are not shown to last until collapse). "
-                    "The DEM does not model the strips.</p>",
-                  _figures_table(frp_out), _checks_table(frp_out["checks"])]
+                  + "; d0* from the curve of gravity alone (the strengthening is not shown to last until collapse). "
+                    "The DEM does not model the strengthening.</p>",
+                  _figures_table(frp_out), _checks_table(frp_out["checks"], frp_out["limit_states"])]
     parts += ["<h2>Figures</h2>", f"<img alt='capacity against demand' src='data:image/png;base64,"
               f"{_png(capacity_figure(res, site, frp))}'>",
-              f"<img alt='site spectra' src='data:image/png;base64,{_png(spectra_figure(site, chk['damping']))}'>",
-              "</body></html>"]
+              f"<img alt='site spectra' src='data:image/png;base64,"
+              f"{_png(spectra_figure(site, chk['damping'] if chk is not None else 5.0))}'>",
+              f"<img alt='virtual displacements' src='data:image/png;base64,"
+              f"{_png(mechanism_figure(mech, 'unreinforced mechanism'))}'>"]
+    gov, gov_out, gov_name = ((frp, frp_out, "strengthened") if frp is not None and frp_out is not None
+                              else (res, out, "unreinforced"))
+    parts += [f"<h2>Calculation ({gov_name} mechanism)</h2>",
+              "<p class='meta'>Every quantity of the verification in the order it is written, with its unit and "
+              "the formula it comes from (docs/physics/assessment.md).</p>", _calculation(gov_out["trail"])]
+    if gov is frp:
+        parts += ["<h3>Unreinforced mechanism</h3>", _calculation(out["trail"])]
+        if frp_out.get("strips"):
+            d = frp_out["strips"]["design"]
+            parts += ["<h3>The strips' design</h3>", _calculation([{"symbol": k, **v} for k, v in d.items()])]
+    parts += ["</body></html>"]
     with atomic_path(path, overwrite=False) as tmp:
         tmp.write_text("".join(parts), encoding="utf-8")

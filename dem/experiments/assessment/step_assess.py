@@ -4,8 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from analytic.codes.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site
-from analytic.codes.frp import Strips
+from analytic.codes.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site, monument_strips
 from dem.common.campaign import CampaignContext, write_csv
 from specimens.constants import G
 from specimens.monuments import NOH_GUMBAD
@@ -14,13 +13,22 @@ from specimens.monuments import NOH_GUMBAD
 def step_assess(ctx: CampaignContext, d: Path) -> dict:
     """The code's kinematic checks of the monument's three configurations, with and without strips."""
     site = monument_site()
-    rows = assess_monument(NOH_GUMBAD, site, Strips(*NOH_GUMBAD_FRP))
+    strips = monument_strips()
+    design = strips.describe(NOH_GUMBAD.arch.width)
+    rows = assess_monument(NOH_GUMBAD, site, strips)
     table = [{"configuration": r["configuration"], "frp": r["frp"], "lambda": r["lambda"], "e_star": r["e_star"],
               "M_star_kg": r["M_star"], "a0_star_g": r["a0_star"] / G, "d0_star_mm": r["d0_star"] * 1e3,
-              "du_star_mm": r["du_star"] * 1e3, "safety_index_linear": r["safety_index_linear"],
+              "du_star_mm": r["du_star"] * 1e3, "a0_over_pga_published_convention": r["activation_over_pga"],
+              "safety_index_linear": r["safety_index_linear"],
               "safety_index_displacement": r["safety_index_displacement"], "verified": r["verified"],
               "hinges_rad": " ".join(f"{h['angle_rad']:.3f}" for h in r["hinges"])} for r in rows]
     write_csv(d / "assess.csv", table)
+    # the calculation of the governing configuration (least governing index), line by line
+    gov = min(rows, key=lambda r: r["safety_index"])
+    calc = [{"quantity": st["symbol"],
+             "value": " ".join(f"{v:.5g}" for v in st["value"]) if isinstance(st["value"], list) else st["value"],
+             "unit": st["unit"], "formula": st["formula"]} for st in gov["trail"]]
+    write_csv(d / "calculation.csv", calc)
     findings = []
     for name in NOH_GUMBAD.configurations:
         bare, frp = (next(r for r in table if r["configuration"] == name and r["frp"] == f) for f in (False, True))
@@ -30,8 +38,15 @@ def step_assess(ctx: CampaignContext, d: Path) -> dict:
                         f"(site PGA {site.pga / G:.3f} g).")
     return {
         "summary": f"{NOH_GUMBAD.source}. Site: EN 1998-1 type 1, ground A, PGA {site.pga:.3g} m/s^2; linear (q = 2) and "
-                   f"displacement (SLV) checks at FC 1.35; FRP strips {NOH_GUMBAD_FRP[0] / 1e6:g} MPa, "
-                   f"{NOH_GUMBAD_FRP[1] * 1e3:g} mm, {NOH_GUMBAD_FRP[2] * 1e3:g} mm on the extrados.",
-        "tables": [{"name": "assess", "title": "Noh Gumbad: code-based assessment", "csv": "assess/assess.csv"}],
+                   f"displacement (SLV) checks at FC 1.35, and the published table's convention a0*/PGA (activation, "
+                   f"no q) beside them; FRP strips {NOH_GUMBAD_FRP[0] / 1e6:g} MPa, "
+                   f"{NOH_GUMBAD_FRP[1] * 1e3:g} mm, {NOH_GUMBAD_FRP[2] * 1e3:g} mm on the extrados, design strength "
+                   f"{design['design_strength_MPa']:.4g} MPa ({design['governing']} on "
+                   f"{design['masonry']['name']}; E_f {design['modulus_GPa']:g} GPa assumed), "
+                   f"{design['force_N'] / 1e3:.3g} kN per joint.",
+        "tables": [{"name": "assess", "title": "Noh Gumbad: code-based assessment", "csv": "assess/assess.csv"},
+                   {"name": "assess_calculation", "csv": "assess/calculation.csv",
+                    "title": f"Noh Gumbad, calculation of the governing configuration ({gov['configuration']}, "
+                             f"{'with' if gov['frp'] else 'without'} FRP): every step with its unit and formula"}],
         "findings": findings,
     }

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from dem.campaign.report import _summary_html
 from dem.campaign.runner import run_campaign
 from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
@@ -62,3 +63,57 @@ def test_report_renders_in_headless_chromium(report, tmp_path):
     subprocess.run([BROWSER, *flags, f"--screenshot={shot}", "--window-size=1200,900", page.as_uri()],
                    capture_output=True, timeout=120)
     assert shot.exists() and shot.stat().st_size > 5000
+
+
+_WIDTH_PROBE = """<script>
+window.addEventListener('load', function () {
+  var w = document.documentElement.clientWidth, wide = [];
+  document.querySelectorAll('body *').forEach(function (e) {
+    var r = e.getBoundingClientRect();
+    if (r.right > w + 1) { wide.push(e.tagName + (e.className ? '.' + e.className : '')); }
+  });
+  var out = document.createElement('pre');
+  out.id = 'archdem-width';
+  out.textContent = 'page=' + w + ' scroll=' + document.documentElement.scrollWidth + ' wide=' + wide.length
+    + ' first=' + (wide[0] || '-') + ' summary=' + (document.body.innerHTML.indexOf('<h2>Summary</h2>') >= 0);
+  document.body.appendChild(out);
+});
+</script></body>"""
+
+
+@pytest.mark.skipif(BROWSER is None, reason="no Chromium on this machine (install Debian's 'chromium' to run it)")
+def test_the_report_fits_the_page(tmp_path):
+    """The summary up front, the parameters as a table, the monument's checks and calculation: in a
+    1000-pixel-wide window no element reaches beyond the page."""
+    out = tmp_path / "campaign"
+    ctx = CampaignContext(out=out, specimens=select_specimens("Sh06-Sd015"), quick=True, workers=1, log=lambda s: None)
+    report = Path(run_campaign(ctx, steps=["catalogue", "assess"])["report"])
+    page = tmp_path / "width.html"
+    page.write_text(report.read_text().replace("</body>", _WIDTH_PROBE))
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=10000", "--window-size=1000,900"]
+    dom = subprocess.run([BROWSER, *flags, "--dump-dom", page.as_uri()], capture_output=True, text=True, timeout=120)
+    m = re.search(r"page=(\d+) scroll=(\d+) wide=(\d+) first=(\S+) summary=(\w+)", dom.stdout)
+    assert m, f"the page did not run its width probe: {dom.stderr[-500:]}"
+    width, scroll, n_wide, first, summary = m.groups()
+    assert int(n_wide) == 0, f"{n_wide} elements wider than the page ({width} px), the first a {first}"
+    assert int(scroll) <= int(width) and summary == "true"
+    shot = tmp_path / "shot.png"
+    subprocess.run([BROWSER, *flags, f"--screenshot={shot}", page.as_uri()], capture_output=True, timeout=120)
+    assert shot.exists() and shot.stat().st_size > 5000
+
+
+def test_the_summary_reads_the_steps_tables():
+    """Per specimen the laboratory's, the limit analysis's and the DEM's lambda and the least shake threshold,
+    read from the steps' tables; a step not run leaves its column blank."""
+    tables = {"lab": [{"id": "A", "lambda_lab_mean": "0.41", "lambda_dem_effective_mean": "0.39",
+                       "lambda_lp_effective": "0.40"}],
+              "analytic": [{"id": "A", "lambda_discrete_glued": "0.42"}, {"id": "B", "lambda_discrete_glued": "0.3"}],
+              "shake": [{"id": "A", "freq_Hz": "2", "a_dem_g": "0.5"}, {"id": "A", "freq_Hz": "4", "a_dem_g": "0.35"},
+                        {"id": "A", "freq_Hz": "8", "a_dem_g": "nan"}]}
+    page = _summary_html(tables)
+    rows = re.findall(r"<tr><td>(\w)</td>(.*?)</tr>", page)
+    assert [r[0] for r in rows] == ["A", "B"]
+    assert rows[0][1] == "<td>0.41</td><td>0.42</td><td>0.39</td><td>0.35 g at 4 Hz</td>"
+    assert rows[1][1] == "<td></td><td>0.3</td><td></td><td></td>"

@@ -15,6 +15,7 @@ from dem.common.options import default_of
 def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
     from analytic.codes.assessment import assess
+    from analytic.codes.frp import Strips
     from analytic.codes.kinematic import Height
     from analytic.compliant.modes import POISSON, modes
     from analytic.limit.calibration import CALIBRATION_FILE
@@ -49,7 +50,8 @@ def _lib():
         "assess": {"soil": default_of(ntc2018, "soil"), "topography": default_of(ntc2018, "topography"),
                    "damping": default_of(ntc2018, "damping"), "FC": default_of(assess, "FC"),
                    "q": default_of(assess, "q"), "limit_state": default_of(assess, "limit_state"),
-                   "building_damping": default_of(Height, "damping1"), "engine": s.engine},
+                   "building_damping": default_of(Height, "damping1"), "engine": s.engine,
+                   **{f"frp_{k}": default_of(Strips, k) for k in ("fibre", "exposure", "application")}},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
                 "mu_base": default_of(catalogue_map, "mu_base"), "refine": default_of(catalogue_map, "refine"),

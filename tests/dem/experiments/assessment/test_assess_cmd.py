@@ -73,7 +73,10 @@ def test_frp_strips_and_the_report(tmp_path, capsys):
     assert f["lambda"] > d["alpha0"] and f["alpha0"] == f["lambda"] and f["e_star"] <= 1
     assert f["safety_index"] > d["safety_index"]
     page = rep.read_text()
-    assert "With FRP strips" in page and page.count("data:image/png;base64,") == 2
+    assert "Strengthened: FRP strips" in page and page.count("data:image/png;base64,") == 3
+    # the calculation an engineer follows: the strengthened mechanism's trail, the unreinforced one's, the strips' design
+    assert "<h2>Calculation (strengthened mechanism)</h2>" in page and page.count("class='calc'") == 3
+    assert "(sum m dx)^2 / sum m dx^2" in page and "convention a0*/PGA, not a code check" in page
     assert main(["assess", "Sh06-Sd015", *NTC, "--report", str(rep)]) == 2  # never overwritten
     assert "exists" in capsys.readouterr().err
 
@@ -84,7 +87,9 @@ def test_a_mechanism_at_a_height_asks_more(capsys):
     for kind in ("linear", "non-linear"):
         assert _check(high, kind)["safety_index"] < _check(ground, kind)["safety_index"]
     slc = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--limit-state", "SLC", "--json"])
-    assert [c["kind"] for c in slc["checks"]] == ["non-linear"] and slc["du_star"] == pytest.approx(0.6 * slc["d0_star"])
+    # SLC: the displacement check, and the activation against the SLC hazard reported as a convention only
+    assert [(c["kind"], c["code_check"]) for c in slc["checks"]] == [("activation", False), ("non-linear", True)]
+    assert slc["du_star"] == pytest.approx(0.6 * slc["d0_star"]) and slc["safety_index"] == slc["checks"][1]["safety_index"]
 
 
 def test_the_noh_gumbad_example(capsys):
@@ -96,6 +101,14 @@ def test_the_noh_gumbad_example(capsys):
         assert bare["lambda"] == pytest.approx(lam, abs=1e-3)
         assert frp["lambda"] > bare["lambda"] and frp["safety_index"] > bare["safety_index"]
     assert d["spectrum"]["ag"] == pytest.approx(3.67) and d["strips"]["width_mm"] == pytest.approx(680)
+    # the strips designed to the guideline on the assumed masonry: intermediate debonding governs every held hinge
+    assert d["strips"]["governing"] == "intermediate debonding" and d["strips"]["force_N"] < 0.85 * 1964 / 1.1 * 0.047 * 680
+    assert all(h["mode"] == "intermediate debonding" for r in d["rows"] if r["frp"] for h in r["strip_hinges"])
+    # published convention a0*/PGA beside the code checks: half the linear index with q = 2 on rock
+    for r in d["rows"]:
+        assert r["activation_over_pga"] == pytest.approx(r["safety_index_linear"] / 2, rel=1e-6)
+    strong = _json(capsys, ["assess", "noh-gumbad", "--masonry", "8,0.8", "--json"])
+    assert strong["strips"]["masonry"]["fm_MPa"] == 8 and strong["strips"]["force_N"] > d["strips"]["force_N"]
     assert main(["assess", "noh-gumbad", "--pier-height", "2", "--pier-width", "1"]) == 2
     assert "its own geometry" in capsys.readouterr().err
 
@@ -110,3 +123,41 @@ def test_records_matched_and_shaken(short_records, capsys):
     assert rec["period_range"][0] == pytest.approx(0.2 * _check(d, "non-linear")["period"])
     assert all(m["scale"] > 0 and r["peak_d_star"] >= 0 for m, r in zip(rec["matched"], rec["runs"]))
     assert rec["verdict"]["d0_star"] == d["d0_star"]
+
+
+def test_both_limit_states_and_the_trail_in_the_json(capsys):
+    """--sld-ag adds the SLD activation check beside SLV's; every step is in the trail; strips designed on a
+    masonry name their governing strength."""
+    d = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--sld-ag", "0.08", "--frp", "100,0.01,1", "--frp-modulus",
+                       "230", "--masonry", "3,0.3", "--json"])
+    assert set(d["limit_states"]) == {"SLD", "SLV"} and d["limit_states"]["SLD"]["governing"] == "activation"
+    act = next(c for c in d["checks"] if c["limit_state"] == "SLD")
+    sld = ntc2018(act["capacity_ag"], 2.4, 0.3, "C")
+    assert sld.pga == pytest.approx(d["a0_star"], rel=1e-8) and act["demand_ag"] == pytest.approx(0.08 * G)
+    symbols = {s["symbol"] for s in d["trail"]}
+    assert {"alpha0", "M*", "e*", "a0*", "d0*", "SLV non-linear: T_s", "SLD activation: safety index"} <= symbols
+    s = d["frp"]["strips"]
+    assert s["governing"] in ("rupture", "intermediate debonding") and s["design"]["f_end"]["unit"] == "MPa"
+    assert s["masonry"]["fm_MPa"] == 3 and d["frp"]["crushing"] and "trail" in d["frp"]
+
+
+def test_a_tie_at_mid_pier(capsys):
+    """A yielding tie half-way down the piers raises the multiplier; its force and anchors are reported."""
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
+    d = _json(capsys, ["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1", "--tie=-0.2,1,2", "--json"])
+    t = d["tie"]
+    assert t["lambda"] > d["alpha0"] and t["tie"]["yield_force_kN"] == pytest.approx(2e-3)
+    assert t["tie"]["force_at_collapse_kN"] == pytest.approx(2e-3, rel=1e-6) and t["strips"] is None
+    (xa, ya), (xb, yb) = t["tie"]["anchors_m"]
+    assert xa < 0 < xb and ya == pytest.approx(-0.2) and yb == pytest.approx(-0.2)
+
+
+def test_records_on_the_tied_structure(short_records, capsys):
+    """With a tie (and no strips) the records shake the tied structure, its tie in the engine, against the tied
+    assessment."""
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "2"]
+    d = _json(capsys, ["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1", "--tie=-0.2,1,2",
+                       "--records", short_records[0], "--workers", "1", "--json"])
+    rec = d["records"]
+    assert "tied structure" in rec["dem_note"] and rec["verdict"]["d0_star"] == d["tie"]["d0_star"]
+    assert rec["runs"][0]["peak_d_star"] >= 0

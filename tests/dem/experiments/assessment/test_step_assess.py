@@ -18,3 +18,9 @@ def test_the_noh_gumbad_section(tmp_path):
     assert all(b > a for a, b in zip(lam[::2], lam[1::2]))  # the strips raise every multiplier
     page = (tmp_path / "report.html").read_text()
     assert "Noh Gumbad" in page and "assess" in manifest["steps"]
+    # the governing configuration's calculation, and the summary up front
+    with open(tmp_path / "assess" / "calculation.csv", newline="") as fh:
+        calc = {r["quantity"]: r for r in csv.DictReader(fh)}
+    assert calc["M*"]["formula"] == "(sum m dx)^2 / sum m dx^2" and float(calc["e*"]["value"]) > 0
+    assert page.index("<h2>Summary</h2>") < page.index("<h2>Findings</h2>") and "a0*/PGA" in page
+    assert "<table class='params'>" in page
