@@ -121,7 +121,10 @@ def exclusive(lock_file: str | os.PathLike, what: str, remove: bool = False) -> 
 
     lock_file = Path(lock_file)
     while True:
-        fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
+        try:
+            fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
+        except OSError as exc:
+            raise ArchdemInputError(f"cannot make the lock file {lock_file} for {what}: {exc.strerror}") from None
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.common.options import print_json, writable_file
+from dem.common.options import figure_file, print_json
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
 from specimens.errors import ArchdemInputError
 
@@ -22,7 +22,7 @@ def _run_rock(args: argparse.Namespace) -> int:
         if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
             raise ArchdemInputError("--scale (a positive factor) is needed with --record")
         if args.plot:
-            writable_file(args.plot, overwrite=False)
+            figure_file(args.plot)
         motion = read_record(args.record).scaled(args.scale)
         label, mech = build_mechanism(args)
         what = f"record {motion.name or args.record} x {args.scale:g}"
@@ -36,7 +36,7 @@ def _run_rock(args: argparse.Namespace) -> int:
         if not (math.isfinite(x) and 0.01 <= x <= 100):
             raise ArchdemInputError(f"{'--duration [s]' if pulses else '--freq [Hz]'} must be in [0.01, 100], got {x:g}")
         if args.plot:
-            writable_file(args.plot, overwrite=False)
+            figure_file(args.plot)
         label, mech = build_mechanism(args)
         a = args.amplitude * G
         if args.input == "sine" and a < abs(mech.onset):

@@ -251,20 +251,86 @@ def figure_file(path: str, option: str = "--plot"):
 
 def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[str, bool]:
     """``(path, resume)`` of a study command's ``--out`` / ``--resume`` (one rule for every study):
-    a mistyped ``--resume`` name is refused rather than starting a new study under it."""
+    a mistyped ``--resume`` name is refused rather than starting a new study under it, and an
+    existing or unwritable ``--out`` before any run."""
     import os
+    from pathlib import Path
 
     from specimens.io import unique_run_path
 
-    if args.resume is not None and args.out:
+    if args.resume is not None and args.out is not None:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
-    if args.resume is not None and not os.path.exists(args.resume):
+    if args.resume and os.path.isdir(args.resume):
+        raise ArchdemInputError(f"--resume {args.resume} is a folder; a study is one .h5 file")
+    if args.resume is not None and not os.path.isfile(args.resume):
         raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
     if args.resume:
         return args.resume, True
-    if args.out:
+    if args.out is not None:
+        out = Path(args.out)
+        if not out.name or out.is_dir():
+            raise ArchdemInputError(f"--out {args.out!r}: give a study file name (STUDY.h5), not a folder")
+        if out.exists() or out.is_symlink():
+            raise ArchdemInputError(f"--out {out} exists; a study is never overwritten (resume it with --resume, "
+                                    "or choose another file)")
+        can_make_dir(out.parent)
         return args.out, False
     return str(unique_run_path(can_make_dir(default_dir), stem)), False
+
+
+#: Options that say where and how a study runs, not what it computes: outside its stored definition.
+RUN_OPTIONS = frozenset({"out", "resume", "workers", "scheduler", "plot", "json", "func", "command", "given"})
+
+
+def given(args: argparse.Namespace) -> frozenset[str]:
+    """The options the command line set by hand (``archdem`` records them; otherwise all of them)."""
+    g = getattr(args, "given", None)
+    return frozenset(vars(args)) if g is None else frozenset(g)
+
+
+def option_name(dest: str) -> str:
+    """``--mu-base`` of the destination ``mu_base`` (``id``: the positional specimen id)."""
+    return "the specimen id" if dest == "id" else "--" + dest.replace("_", "-")
+
+
+def option_used(args: argparse.Namespace, dest: str, used: bool, why: str) -> None:
+    """One rule for options that do nothing in their context: ``dest`` given by hand where it is
+    not ``used`` is refused in one line, ``why`` saying what it belongs to."""
+    if not used and dest in given(args):
+        raise ArchdemInputError(f"{option_name(dest)} does nothing here: {why}")
+
+
+def study_definition(args: argparse.Namespace) -> dict:
+    """What a study command computes: its options but RUN_OPTIONS (stored in the study file)."""
+    return {k: v for k, v in vars(args).items() if k not in RUN_OPTIONS}
+
+
+def restore_study(args: argparse.Namespace) -> None:
+    """``--resume STUDY.h5``: the study's options from its file, so that a resume runs that study; an
+    option given by hand with another value is refused in one line (a study made without a stored
+    definition keeps the command line's)."""
+    import os
+
+    from dem.studies.sweep import canonical_json, stored_definition
+
+    if not os.path.isfile(args.resume):
+        return  # study_path refuses it in its words
+    stored = stored_definition(args.resume)
+    if stored is None:
+        return
+    mine = given(args)
+    for k, v in stored.items():
+        if k in RUN_OPTIONS or not hasattr(args, k):
+            continue
+        have = getattr(args, k)
+        if k in mine and canonical_json(have) != canonical_json(v):
+            raise ArchdemInputError(f"{option_name(k)} {_shown(have)} is not the study's ({args.resume} holds "
+                                    f"{_shown(v)}); resume without it, or start a new study with --out")
+        setattr(args, k, tuple(v) if isinstance(have, tuple) else v)
+
+
+def _shown(v: Any) -> str:
+    return " ".join(map(str, v)) if isinstance(v, (list, tuple)) else str(v)
 
 
 def add_friction_arguments(p: argparse.ArgumentParser, what: str = "") -> None:

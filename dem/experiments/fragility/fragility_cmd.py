@@ -20,6 +20,7 @@ from dem.common.options import (
     figure_file,
     parse_grid,
     print_json,
+    study_definition,
     study_path,
     workers_option,
 )
@@ -140,6 +141,8 @@ def _perturbation(args: argparse.Namespace, structure: dict):
 def _run(args: argparse.Namespace) -> int:
     from dem.experiments.fragility.run import fragility, make_cases
     from dem.studies.sweep import StudyInterrupted, check_scheduler
+    if args.realizations is None:
+        raise ArchdemInputError("give --realizations N (perturbed realisations per stripe)")
     label, structure, model = _structure(args)
     settings = _settings(args)
     pert = _perturbation(args, structure)
@@ -154,7 +157,7 @@ def _run(args: argparse.Namespace) -> int:
     try:
         res = fragility(label, structure, settings, pert, groups, args.realizations, args.seed, path,
                         workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
-                        deterministic=deterministic)
+                        deterministic=deterministic, definition=study_definition(args))
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}; continue with --resume {path}", file=sys.stderr)
         return 2
@@ -201,8 +204,8 @@ def register(sub) -> None:
     p.add_argument("--records", nargs="+", default=None, metavar="FILE", help="a suite of records (.AT2, .smc, ESM, CSV)")
     p.add_argument("--im", default=None, metavar="pga|pgv|sa:T", help="intensity measure of the records' stripes")
     p.add_argument("--stripes", default=None, metavar="GRID", help="intensities of the stripes (g; m/s for pgv)")
-    p.add_argument("--realizations", "--realisations", dest="realizations", type=int, required=True,
-                   help="perturbed realisations per stripe")
+    p.add_argument("--realizations", "--realisations", dest="realizations", type=int, default=None,
+                   help="perturbed realisations per stripe (needed; a resume takes the study's)")
     p.add_argument("--seed", type=int, default=0, help="seed of the realisations (default 0)")
     p.add_argument("--edge-loss", type=float, default=None, help="mean edge loss of every joint [mm] (arch; default 0)")
     p.add_argument("--edge-loss-sd", type=float, default=None,

@@ -15,6 +15,7 @@ from dem.common.options import (
     piers_from_args,
     print_json,
     resolve_contact,
+    study_definition,
     study_path,
     workers_option,
     writable_dir,
@@ -72,7 +73,8 @@ def _run(args: argparse.Namespace) -> int:
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
                             settings=settings or None,
-                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs}, piers=piers)
+                            contact={s.id: resolve_contact(args.contact, s.arch) for s in specs}, piers=piers,
+                            definition=study_definition(args))
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2
