@@ -64,6 +64,8 @@ def unique_run_path(directory: str | os.PathLike, stem: str, suffix: str = ".h5"
 
 def writable_dir(path: str | os.PathLike) -> Path:
     """Create ``path`` (a directory) or fail with a one-line input error."""
+    if not str(path).strip():
+        raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
     p = Path(path)
     try:
         p.mkdir(parents=True, exist_ok=True)
@@ -78,6 +80,8 @@ def can_make_dir(path: str | os.PathLike) -> Path:
     """Check, without making anything, that the folder ``path`` exists and is writable or can be
     made (its nearest existing parent is a writable folder): a run fails before it starts, and a
     run that fails leaves no empty folder behind."""
+    if not str(path).strip():
+        raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
     p = Path(path)
     q = p
     while not q.exists() and q != q.parent:
@@ -86,13 +90,24 @@ def can_make_dir(path: str | os.PathLike) -> Path:
         raise ArchdemInputError(f"cannot create directory {p}: {q} is not a folder")
     if not os.access(q, os.W_OK | os.X_OK):
         raise ArchdemInputError(f"cannot create directory {p}: {q} is not writable")
+    try:  # the permissions do not tell for root, nor on /proc or a read-only mount: try it
+        fd, probe = tempfile.mkstemp(prefix=".archdem-probe-", dir=q)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise ArchdemInputError(f"cannot create directory {p}: {q} is not writable ({exc.strerror})") from None
     return p
 
 
 def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
-    """Check that ``path`` can be written (its directory exists or can be made)."""
+    """Check, without making anything, that the file ``path`` can be written (its folder exists or
+    can be made, the name is not a folder), before the work that produces it."""
+    if not str(path).strip():
+        raise ArchdemInputError("an output file name is empty")
     p = Path(path)
-    writable_dir(p.parent if str(p.parent) else ".")
+    if p.is_dir():
+        raise ArchdemInputError(f"{p} is a folder; give a file name")
+    can_make_dir(p.parent)
     if p.exists() and not overwrite:
         raise ArchdemInputError(f"{p} exists; not overwriting it (choose another name)")
     return p

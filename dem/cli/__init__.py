@@ -13,7 +13,7 @@ import sys
 
 from dem.campaign import campaign_cmd
 from dem.cli import analytic_cmd, rock_cmd, specimens_cmd
-from dem.common.options import restore_study
+from dem.common.options import common_rules, restore_study
 from dem.experiments.assessment import assess_cmd
 from dem.experiments.compare_engines import compare_engines_cmd
 from dem.experiments.fragility import fragility_cmd
@@ -73,6 +73,7 @@ def main(argv: list[str] | None = None) -> int:
         args.given = given_options(parser, argv, args.command)
         if getattr(args, "resume", None):
             restore_study(args)
+        common_rules(args)
         return int(args.func(args) or 0)
     except ArchdemInputError as exc:
         print(f"archdem: error: {exc}", file=sys.stderr)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from dem.common.options import figure_file, print_json
+from dem.common.options import figure_file, option_used, print_json
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
 from specimens.errors import ArchdemInputError
 
@@ -16,7 +16,14 @@ def _run_rock(args: argparse.Namespace) -> int:
     from specimens.constants import G
 
     rest = restitution_option(args.restitution)
-    if args.record is not None:
+    pulses = args.input in ("A", "B")
+    record = args.record is not None
+    option_used(args, "scale", record, "it scales a --record")
+    option_used(args, "amplitude", not record, "a --record is scaled by --scale")
+    option_used(args, "input", not record, "a --record is the input")
+    option_used(args, "freq", not record and not pulses, "it is a sine's (pulses A/B take --duration)")
+    option_used(args, "duration", not record and pulses, "it is the length of pulses A/B (a sine takes --freq)")
+    if record:
         from analytic.records import read_record
 
         if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
@@ -29,7 +36,6 @@ def _run_rock(args: argparse.Namespace) -> int:
     else:
         if args.amplitude is None or not (math.isfinite(args.amplitude) and 0 < args.amplitude <= 100):
             raise ArchdemInputError(f"--amplitude (in g) must be a positive number up to 100, got {args.amplitude}")
-        pulses = args.input in ("A", "B")
         x = args.duration if pulses else args.freq
         if x is None:
             raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")

@@ -283,9 +283,15 @@ RUN_OPTIONS = frozenset({"out", "resume", "workers", "scheduler", "plot", "json"
 
 
 def given(args: argparse.Namespace) -> frozenset[str]:
-    """The options the command line set by hand (``archdem`` records them; otherwise all of them)."""
+    """The options the command line set by hand (``archdem`` records them; otherwise those set to
+    something other than None or False)."""
     g = getattr(args, "given", None)
-    return frozenset(vars(args)) if g is None else frozenset(g)
+    return frozenset(k for k, v in vars(args).items() if v is not None and v is not False) if g is None else frozenset(g)
+
+
+def common_rules(args: argparse.Namespace) -> None:
+    """The rules every command shares, checked before its own: ``--workers`` beside ``--scheduler``."""
+    option_used(args, "workers", not getattr(args, "scheduler", None), "a --scheduler's cluster runs the cases")
 
 
 def option_name(dest: str) -> str:

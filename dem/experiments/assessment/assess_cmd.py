@@ -12,6 +12,7 @@ from dem.common.options import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
+    option_used,
     parse_grid,
     print_json,
     workers_option,
@@ -181,6 +182,7 @@ def _run(args: argparse.Namespace) -> int:
         writable_file(args.report, overwrite=False)
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
+    option_used(args, "engine", bool(args.records), "the engine runs the --records on the DEM")
     mech = _mechanism(args, arch)
     res = assess(mech, site, args.FC, args.q, args.limit_state, height)
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),

@@ -18,6 +18,7 @@ from dem.common.options import (
     default_of,
     discretisation_kwargs,
     figure_file,
+    option_used,
     parse_grid,
     print_json,
     study_definition,
@@ -104,6 +105,7 @@ def _groups(args: argparse.Namespace) -> tuple[list, dict]:
 
 def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dict:
     """Per frequency, the least collapsing amplitude of the nominal structure (``archdem threshold``)."""
+    option_used(args, "no_deterministic", info["input"] == "sine", "the deterministic thresholds are the sines'")
     if info["input"] != "sine" or args.no_deterministic:
         return {}
     from dem.core.settings import Settings

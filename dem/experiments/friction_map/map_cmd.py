@@ -9,6 +9,7 @@ from dem.common.options import (
     add_contact_law_arguments,
     add_engine_argument,
     add_pier_arguments,
+    can_make_dir,
     contact_law_settings,
     contact_option,
     default_of,
@@ -18,7 +19,6 @@ from dem.common.options import (
     study_definition,
     study_path,
     workers_option,
-    writable_dir,
 )
 from specimens.errors import ArchdemInputError
 
@@ -67,7 +67,7 @@ def _run(args: argparse.Namespace) -> int:
     settings = ({"engine": args.engine} if args.engine != default_of(Settings, "engine") else {}) | law
     path, resume = study_path(args, "runs/map", f"map-{args.config}")
     if args.plot:
-        writable_dir(args.plot)
+        can_make_dir(args.plot)
     try:
         res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,

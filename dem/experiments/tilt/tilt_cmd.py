@@ -14,6 +14,7 @@ from dem.common.options import (
     default_of,
     discretisation_kwargs,
     figure_file,
+    option_used,
     print_json,
     resolve_contact,
     workers_option,
@@ -44,6 +45,8 @@ def _run(args: argparse.Namespace) -> int:
         return _run_ensemble(args, label, arch)
     if args.seed is not None or args.scatter is not None or args.workers is not None:
         raise ArchdemInputError("--seed, --scatter and --workers go with --ensemble N")
+    for dest in ("start", "full_hold"):
+        option_used(args, dest, args.protocol == "hold", "it belongs to --protocol hold")
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine, **law}
     if args.dt is not None:
