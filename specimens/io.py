@@ -66,7 +66,7 @@ def writable_dir(path: str | os.PathLike) -> Path:
     """Create ``path`` (a directory) or fail with a one-line input error."""
     if not str(path).strip():
         raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
-    p = Path(path)
+    p = _parts_fit(Path(path))
     try:
         p.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -76,13 +76,21 @@ def writable_dir(path: str | os.PathLike) -> Path:
     return p
 
 
+def _parts_fit(p: Path) -> Path:
+    """``p`` whose every component fits a file name (255 bytes): longer ones make the system's calls fail."""
+    for part in p.parts:
+        if len(os.fsencode(part)) > 255:
+            raise ArchdemInputError(f"the name {part[:40]}... is too long ({len(part)} characters; at most 255)")
+    return p
+
+
 def can_make_dir(path: str | os.PathLike) -> Path:
     """Check, without making anything, that the folder ``path`` exists and is writable or can be
     made (its nearest existing parent is a writable folder): a run fails before it starts, and a
     run that fails leaves no empty folder behind."""
     if not str(path).strip():
         raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
-    p = Path(path)
+    p = _parts_fit(Path(path))
     q = p
     while not q.exists() and q != q.parent:
         q = q.parent
@@ -99,12 +107,32 @@ def can_make_dir(path: str | os.PathLike) -> Path:
     return p
 
 
+#: Characters a result's temporary or lock file adds to its name (``.NAME.XXXXXXXX.part``, ``.NAME.lock``).
+NAME_MARGIN = 16
+
+
+def check_name(path: str | os.PathLike) -> Path:
+    """A result file name the file system takes with its temporary and lock files beside it."""
+    p = _parts_fit(Path(path))
+    q = p.parent
+    while not q.exists() and q != q.parent:
+        q = q.parent
+    try:
+        limit = os.pathconf(q, "PC_NAME_MAX")
+    except (OSError, ValueError):
+        limit = 255
+    if len(os.fsencode(p.name)) + NAME_MARGIN > limit:
+        raise ArchdemInputError(f"the file name {p.name[:40]}... is too long ({len(p.name)} characters; at most "
+                                f"{limit - NAME_MARGIN} here)")
+    return p
+
+
 def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
     """Check, without making anything, that the file ``path`` can be written (its folder exists or
     can be made, the name is not a folder), before the work that produces it."""
     if not str(path).strip():
         raise ArchdemInputError("an output file name is empty")
-    p = Path(path)
+    p = check_name(path)  # first: a name too long breaks even the questions below
     if p.is_dir():
         raise ArchdemInputError(f"{p} is a folder; give a file name")
     can_make_dir(p.parent)

@@ -11,7 +11,7 @@ from typing import Any
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.errors import ArchdemInputError
-from specimens.io import can_make_dir, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.io import can_make_dir, check_name, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
@@ -233,6 +233,17 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
     return kw
 
 
+def require_standing(label: str, arch, **kw: Any) -> None:
+    """Refuse, in one line, an arch (``discretise`` keywords ``kw``) that cannot stand under its own
+    weight even without sliding: a test of its capacity would answer nothing."""
+    from analytic.limit_discrete import solve_lp
+
+    lp = solve_lp(discretise(arch, **kw), math.inf, math.inf)
+    if not lp.stands:
+        raise ArchdemInputError(f"{label} cannot stand under its own weight (no equilibrium even without sliding): "
+                                "there is no capacity to test")
+
+
 #: Figure formats the commands write (matplotlib's, by the file's suffix).
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
@@ -244,6 +255,7 @@ def figure_file(path: str, option: str = "--plot"):
     p = Path(path)
     if p.suffix.lower() not in FIGURE_SUFFIXES:
         raise ArchdemInputError(f"{option} must end in {', '.join(FIGURE_SUFFIXES)}, got {p.name!r}")
+    check_name(p)
     if p.is_dir():
         raise ArchdemInputError(f"{option} {p} is a folder; give a file name")
     return writable_file(p, overwrite=False)
@@ -268,6 +280,8 @@ def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[s
         return args.resume, True
     if args.out is not None:
         out = Path(args.out)
+        if out.name:
+            check_name(out)
         if not out.name or out.is_dir():
             raise ArchdemInputError(f"--out {args.out!r}: give a study file name (STUDY.h5), not a folder")
         if out.exists() or out.is_symlink():

@@ -15,6 +15,7 @@ from dem.common.options import (
     option_used,
     parse_grid,
     print_json,
+    require_standing,
     workers_option,
 )
 from specimens.constants import G
@@ -183,6 +184,7 @@ def _run(args: argparse.Namespace) -> int:
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
     option_used(args, "engine", bool(args.records), "the engine runs the --records on the DEM")
+    require_standing(label, arch, **discretisation_kwargs(args, arch))
     mech = _mechanism(args, arch)
     res = assess(mech, site, args.FC, args.q, args.limit_state, height)
     out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),

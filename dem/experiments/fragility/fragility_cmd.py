@@ -21,6 +21,7 @@ from dem.common.options import (
     option_used,
     parse_grid,
     print_json,
+    require_standing,
     study_definition,
     study_path,
     workers_option,
@@ -44,6 +45,7 @@ def _structure(args: argparse.Namespace):
         return f"block-b{b:g}-h{h:g}", block_structure(2 * b, 2 * h, width, density), model
     label, arch = arch_from_args(args)
     kw = discretisation_kwargs(args, arch)
+    require_standing(label, arch, **kw)
     asm = discretise(arch, config=args.config, **kw)
     return label, arch_structure(arch, args.config, kw.get("n_voussoirs"), asm.contact, kw.get("piers"),
                                  kw.get("density")), from_assembly(asm, name=label)

@@ -16,6 +16,7 @@ from dem.common.options import (
     figure_file,
     option_used,
     print_json,
+    require_standing,
     resolve_contact,
     workers_option,
     writable_dir,
@@ -39,6 +40,7 @@ def _run(args: argparse.Namespace) -> int:
         if not (math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
     law = contact_law_settings(args, args.id)
+    require_standing(label, arch, **discretisation_kwargs(args, arch))
     if args.ensemble is not None:
         if law:
             raise ArchdemInputError("an ensemble runs rigid joints: drop --contact-law/--kn/--damping-*/--joints")

@@ -33,7 +33,8 @@ def _refused_at_once(tmp_path, monkeypatch, capsys, argv, msg):
     ([*FRAGILITY, "--out", "dir"], "not a folder"),
     ([*FRAGILITY, "--out", "/proc/x/s.h5"], "cannot create directory /proc/x"),
     (["map", "--specimens", "Sh02-Sd020", "--out", "old.h5"], "old.h5 exists"),
-    (["map", "--specimens", "Sh02-Sd020", "--out", "a" * 250 + ".h5"], "cannot make the lock file"),
+    (["map", "--specimens", "Sh02-Sd020", "--out", "a" * 250 + ".h5"], "is too long"),
+    (["shake", "Sh02-Sd020", *SINE, "--plot", "a" * 300 + ".png"], "is too long"),
     ([*TILT, "--out", "/proc/x"], "cannot create directory /proc/x"),
     ([*TILT, "--out", ""], "an output path is empty"),
     (["mesh", "Sh02-Sd020", "--out", ""], "an output path is empty"),
@@ -44,7 +45,10 @@ def _refused_at_once(tmp_path, monkeypatch, capsys, argv, msg):
     (["compare-engines", "--specimens", "Sh02-Sd020", "--plot", "old.png"], "exists"),
     (["calibrate", "--out", "dir"], "dir is a folder; give a file name"),
     (["tilt", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "0.2", "--joints", "table-5.1"], "not an arch by its parameters"),
-    # records that cannot mean anything
+    # runs that cannot mean anything: an arch that cannot stand, records that move nothing
+    (["tilt", "--Sh", "0", "--Sd", "0.03", "--Rc", "0.2"], "cannot stand under its own weight"),
+    (["threshold", "--Sh", "0", "--Sd", "0.03", "--Rc", "0.2", "--sine", "4"], "cannot stand under its own weight"),
+    (["assess", "--Sh", "0", "--Sd", "0.03", "--Rc", "0.2", "--spectrum", "ec8", "--ag", "0.2"], "cannot stand"),
     (["shake", "Sh02-Sd020", "--record", "zeros.csv", "--pga", "0.4"], "is all zeros"),
     (["shake", "Sh02-Sd020", "--record", "zeros.csv", "--scale", "1"], "is all zeros"),
     (["shake", "Sh02-Sd020", "--record", "tiny.csv", "--scale", "1"], "peaks at 3e-10 g"),
