@@ -304,8 +304,17 @@ def given(args: argparse.Namespace) -> frozenset[str]:
 
 
 def common_rules(args: argparse.Namespace) -> None:
-    """The rules every command shares, checked before its own: ``--workers`` beside ``--scheduler``."""
+    """The rules every command shares, checked before its own: an output given as an empty name (which
+    would mean no output at all), ``--workers`` beside ``--scheduler``."""
+    for dest in sorted(OUTPUT_OPTIONS & given(args)):
+        v = getattr(args, dest, None)
+        if isinstance(v, str) and not v.strip():
+            raise ArchdemInputError(f"{option_name(dest)} is empty; give a name")
     option_used(args, "workers", not getattr(args, "scheduler", None), "a --scheduler's cluster runs the cases")
+
+
+#: Options that name an output or a study file.
+OUTPUT_OPTIONS = frozenset({"out", "plot", "report", "resume", "animate"})
 
 
 def option_name(dest: str) -> str:
