@@ -65,7 +65,9 @@ def unique_run_path(directory: str | os.PathLike, stem: str, suffix: str = ".h5"
 
 def writable_dir(path: str | os.PathLike) -> Path:
     """Create ``path`` (a directory) or fail with a one-line input error."""
-    p = Path(path)
+    if not str(path).strip():
+        raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
+    p = _parts_fit(Path(path))
     try:
         p.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -75,11 +77,21 @@ def writable_dir(path: str | os.PathLike) -> Path:
     return p
 
 
+def _parts_fit(p: Path) -> Path:
+    """``p`` whose every component fits a file name (255 bytes): longer ones make the system's calls fail."""
+    for part in p.parts:
+        if len(os.fsencode(part)) > 255:
+            raise ArchdemInputError(f"the name {part[:40]}... is too long ({len(part)} characters; at most 255)")
+    return p
+
+
 def can_make_dir(path: str | os.PathLike) -> Path:
     """Check, without making anything, that the folder ``path`` exists and is writable or can be
     made (its nearest existing parent is a writable folder): a run fails before it starts, and a
     run that fails leaves no empty folder behind."""
-    p = Path(path)
+    if not str(path).strip():
+        raise ArchdemInputError("an output path is empty; give a name (\".\" for the current folder)")
+    p = _parts_fit(Path(path))
     q = p
     while not q.exists() and q != q.parent:
         q = q.parent
@@ -87,13 +99,44 @@ def can_make_dir(path: str | os.PathLike) -> Path:
         raise ArchdemInputError(f"cannot create directory {p}: {q} is not a folder")
     if not os.access(q, os.W_OK | os.X_OK):
         raise ArchdemInputError(f"cannot create directory {p}: {q} is not writable")
+    try:  # the permissions do not tell for root, nor on /proc or a read-only mount: try it
+        fd, probe = tempfile.mkstemp(prefix=".archdem-probe-", dir=q)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise ArchdemInputError(f"cannot create directory {p}: {q} is not writable ({exc.strerror})") from None
+    return p
+
+
+#: Characters a result's temporary or lock file adds to its name (``.NAME.XXXXXXXX.part``, ``.NAME.lock``).
+NAME_MARGIN = 16
+
+
+def check_name(path: str | os.PathLike) -> Path:
+    """A result file name the file system takes with its temporary and lock files beside it."""
+    p = _parts_fit(Path(path))
+    q = p.parent
+    while not q.exists() and q != q.parent:
+        q = q.parent
+    try:
+        limit = os.pathconf(q, "PC_NAME_MAX")
+    except (OSError, ValueError):
+        limit = 255
+    if len(os.fsencode(p.name)) + NAME_MARGIN > limit:
+        raise ArchdemInputError(f"the file name {p.name[:40]}... is too long ({len(p.name)} characters; at most "
+                                f"{limit - NAME_MARGIN} here)")
     return p
 
 
 def writable_file(path: str | os.PathLike, overwrite: bool = True) -> Path:
-    """Check that ``path`` can be written (its directory exists or can be made)."""
-    p = Path(path)
-    writable_dir(p.parent if str(p.parent) else ".")
+    """Check, without making anything, that the file ``path`` can be written (its folder exists or
+    can be made, the name is not a folder), before the work that produces it."""
+    if not str(path).strip():
+        raise ArchdemInputError("an output file name is empty")
+    p = check_name(path)  # first: a name too long breaks even the questions below
+    if p.is_dir():
+        raise ArchdemInputError(f"{p} is a folder; give a file name")
+    can_make_dir(p.parent)
     if p.exists() and not overwrite:
         raise ArchdemInputError(f"{p} exists; not overwriting it (choose another name)")
     return p
@@ -120,7 +163,10 @@ def exclusive(lock_file: str | os.PathLike, what: str, remove: bool = False) -> 
     """
     lock_file = Path(lock_file)
     while True:
-        fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
+        try:
+            fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)
+        except OSError as exc:
+            raise ArchdemInputError(f"cannot make the lock file {lock_file} for {what}: {exc.strerror}") from None
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:

@@ -59,6 +59,10 @@ class TiltTest:
     mode_text: str
 
 
+#: How far a catalogue specimen's Ri_mm, Re_mm, e_mm may stand from the catalogue's [m] (a table rounds to the mm).
+GEOMETRY_TOL = 1e-3
+
+
 def read_experiments(path: str | Path) -> list[TiltTest]:
     """The laboratory table ``path`` (CSV, ``#`` comment lines): columns ``id``, ``lambda_mean``,
     ``lambda_sd``, ``observed_mode`` (first word rocking / sliding), optional ``n_tests``; ids of
@@ -83,23 +87,36 @@ def read_experiments(path: str | Path) -> list[TiltTest]:
             n = int(r.get("n_tests") or 1)
         except (TypeError, ValueError):
             raise ArchdemInputError(f"{p}, row {k} ({sid}): lambda_mean, lambda_sd and n_tests must be numbers") from None
-        if not (math.isfinite(mean) and mean > 0 and math.isfinite(sd) and sd >= 0 and n >= 1):
-            raise ArchdemInputError(f"{p}, row {k} ({sid}): need lambda_mean > 0, lambda_sd >= 0, n_tests >= 1")
+        if not (math.isfinite(mean) and mean > 0 and math.isfinite(sd) and sd > 0 and n >= 1):
+            raise ArchdemInputError(f"{p}, row {k} ({sid}): need lambda_mean > 0, lambda_sd > 0 (the fit weighs each "
+                                    "test by it), n_tests >= 1")
         mode_text = (r["observed_mode"] or "").strip()
         mode = mode_text.split(":")[0].split()[0].lower() if mode_text else ""
         if mode not in ("rocking", "sliding"):
             raise ArchdemInputError(f"{p}, row {k} ({sid}): observed_mode must start with rocking or sliding")
-        if sid in known:
-            arch = known[sid].arch
-        elif all((r.get(c) or "").strip() for c in GEOMETRY_COLUMNS):
+        geometry = [(r.get(c) or "").strip() for c in GEOMETRY_COLUMNS]
+        if any(geometry):
             try:
-                Ri, Re, e = (float(r[c]) / 1000 for c in GEOMETRY_COLUMNS)
+                Ri, Re, e = (float(v) / 1000 for v in geometry)
             except ValueError:
                 raise ArchdemInputError(f"{p}, row {k} ({sid}): Ri_mm, Re_mm, e_mm must be numbers") from None
+            if not (all(map(math.isfinite, (Ri, Re, e))) and 0 < Ri < Re and e >= 0):
+                raise ArchdemInputError(f"{p}, row {k} ({sid}): need 0 < Ri_mm < Re_mm and e_mm >= 0")
+        if sid in known:
+            arch = known[sid].arch
+            # a catalogue specimen's columns are checked, not ignored: the table gives them to the mm
+            if any(geometry) and max(abs(a - b) for a, b in zip((Ri, Re, e), (arch.Ri, arch.Re, arch.e))) > GEOMETRY_TOL:
+                raise ArchdemInputError(f"{p}, row {k} ({sid}): Ri_mm, Re_mm, e_mm {'/'.join(geometry)} are not the "
+                                        f"catalogue's {arch.Ri * 1e3:g}/{arch.Re * 1e3:g}/{arch.e * 1e3:g} mm")
+        elif all(geometry):
             arch = PointedArch.from_radii(Ri, Re, e, width=SPECIMEN_WIDTH)
         else:
             raise ArchdemInputError(f"{p}, row {k}: unknown specimen id {sid!r} (not in the catalogue and no "
                                     f"{', '.join(GEOMETRY_COLUMNS)} columns)")
+        ideal = lp_lambda(arch, 1.0)
+        if mean > ideal + 3 * sd:  # no edge loss raises the multiplier above the full joints'
+            raise ArchdemInputError(f"{p}, row {k} ({sid}): lambda_mean {mean:g} is beyond the multiplier of the arch "
+                                    f"with full joints ({ideal:.3f}) by more than 3 sd: not a tilt test of this arch")
         out.append(TiltTest(sid, arch, mean, sd, n, mode, mode_text))
     if len({t.id for t in out}) != len(out):
         raise ArchdemInputError(f"{p}: a specimen id appears twice")

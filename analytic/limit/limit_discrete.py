@@ -372,6 +372,14 @@ def solve_lp(
                     res.tie_forces)
 
 
+def require_standing(label: str, assembly: Assembly) -> None:
+    """Refuse, in one line, an ``assembly`` that cannot stand under its own weight even without
+    sliding: a test of its capacity would answer nothing."""
+    if not solve_lp(assembly, math.inf, math.inf).stands:
+        raise ArchdemInputError(f"{label} cannot stand under its own weight (no equilibrium even without sliding): "
+                                "there is no capacity to test")
+
+
 # ---------------------------------------------------------------------------------------------
 # kinematic enumeration
 # ---------------------------------------------------------------------------------------------

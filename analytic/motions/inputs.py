@@ -12,6 +12,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 
@@ -145,6 +146,11 @@ class SinePulse(GroundMotion):
         return {"kind": "sine", "a": self.a, "f": self.f, "phase": self.phase, "duration": self.duration}
 
 
+#: Smallest peak a sampled motion may have [m/s^2]: 1e-6 g, the resolution of a strong-motion
+#: accelerometer; below it (a record of zeros, a typo in a scale) no block can move.
+MIN_PEAK_ACCELERATION = 1e-6 * G
+
+
 @dataclass(frozen=True)
 class SampledMotion(GroundMotion):
     """A sampled accelerogram: values [m/s^2] at ``t_k = k dt``, linear in between, times ``scale``.
@@ -165,6 +171,11 @@ class SampledMotion(GroundMotion):
             raise ArchdemInputError("a sampled motion needs a 1-D array of at least 2 values")
         if not np.all(np.isfinite(v)):
             raise ArchdemInputError("a sampled motion contains non-finite values")
+        peak = abs(float(self.scale)) * float(np.max(np.abs(v)))
+        if not (math.isfinite(peak) and peak >= MIN_PEAK_ACCELERATION):
+            what = "is all zeros" if peak == 0 else f"peaks at {peak / G:.3g} g"
+            raise ArchdemInputError(f"the motion{f' {self.name!r}' if self.name else ''} {what}: below "
+                                    f"{MIN_PEAK_ACCELERATION / G:g} g, an accelerometer's resolution, it moves nothing")
         object.__setattr__(self, "values", v)
 
     @property

@@ -489,8 +489,10 @@ def ground_motion(sine: float | None = None, amplitude: float | None = None, rec
         if amplitude is None:
             raise ArchdemInputError("--sine needs --amplitude A_G (in g)")
         positive("--amplitude", amplitude)
-        if scale is not None or pga is not None:
-            raise ArchdemInputError("--scale/--pga go with --record")
+        given = [n for n, v in (("--scale", scale), ("--pga", pga), ("--units", units), ("--baseline", baseline or None))
+                 if v is not None]
+        if given:  # each would do nothing to a sine
+            raise ArchdemInputError(f"{'/'.join(given)} {'goes' if len(given) == 1 else 'go'} with --record, not a sine")
         return SinePulse(amplitude * G, sine)
     if amplitude is not None:
         raise ArchdemInputError("--amplitude goes with --sine; scale a record with --scale or --pga")

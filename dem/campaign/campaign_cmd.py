@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import time
 from pathlib import Path
 
@@ -13,6 +14,8 @@ from dem.common.options import (
     contact_law_settings,
     contact_option,
     default_of,
+    given,
+    option_name,
     workers_option,
     writable_dir,
 )
@@ -24,6 +27,7 @@ def _campaign(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.campaign.runner import all_steps, run_campaign
 
+    _restore(args)
     specs = select_specimens(args.specimens)
     steps = None
     if args.steps is not None:  # checked before the output folder is made
@@ -72,6 +76,29 @@ def _campaign(args: argparse.Namespace) -> int:
     if report:
         print(f"report: {report}")
     return 0
+
+
+def _restore(args: argparse.Namespace) -> None:
+    """A campaign folder resumes its campaign: the parameters of its ``campaign.json`` replace those not
+    given by hand; one given with another value is refused in one line, before any simulation."""
+    try:
+        params = json.loads((Path(args.out) / "campaign.json").read_text()).get("parameters") or {}
+    except (OSError, ValueError, AttributeError):
+        return  # no campaign there yet (or no readable one: the runner says so)
+    stored = {"specimens": params.get("specimens"), "config": params.get("config"), "engine": params.get("engine"),
+              "quick": params.get("quick"), "contact": params.get("contact", 1.0)}
+    if params.get("joints") == "table-5.1":
+        stored["joints"] = "table-5.1"
+    mine = given(args)
+    for k, v in stored.items():
+        if v is None:
+            continue
+        have = [s.id for s in select_specimens(args.specimens)] if k == "specimens" else getattr(args, k)
+        if k in mine and have != v:
+            raise ArchdemInputError(f"{option_name(k)} {args.specimens if k == 'specimens' else have} is not the "
+                                    f"campaign's in {args.out} ({','.join(v) if k == 'specimens' else v}); give it "
+                                    "without it, or choose another --out")
+        setattr(args, k, ",".join(v) if k == "specimens" else v)
 
 
 def _duration(seconds: float) -> str:

@@ -63,9 +63,9 @@ def default_steps() -> list[str]:
 
 def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
     """Run (or resume) the campaign; return the manifest. One process at a time per folder: a
-    second one is refused (``OUT/.archdem.lock``)."""
+    second one is refused (``OUT/.archdem.lock``, removed when the campaign ends)."""
     ctx.out.mkdir(parents=True, exist_ok=True)
-    with exclusive(ctx.out / LOCK_FILE, f"the campaign folder {ctx.out}"):
+    with exclusive(ctx.out / LOCK_FILE, f"the campaign folder {ctx.out}", remove=True):
         return _run_campaign(ctx, steps)
 
 

@@ -16,6 +16,7 @@ from importlib.metadata import version
 
 from dem.campaign import campaign_cmd
 from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
+from dem.common.options import common_rules, restore_study
 from dem.experiments.assessment import assess_cmd
 from dem.experiments.compare_engines import compare_engines_cmd
 from dem.experiments.fragility import fragility_cmd
@@ -69,11 +70,16 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # a usage error (one line, code 2) or --help / --version (code 0)
         return int(exc.code or 0)
     try:
+        args.given = given_options(parser, argv, args.command)
+        if getattr(args, "resume", None):
+            restore_study(args)
+        common_rules(args)
         code = int(args.func(args) or 0)
         # a reader that went away shows here, not at exit (where Python 3.13 exits with 120)
         sys.stdout.flush()
@@ -90,6 +96,21 @@ def main(argv: list[str] | None = None) -> int:
         # the reader of our output went away (e.g. | head): no traceback, and none at exit either
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+
+
+def given_options(parser: argparse.ArgumentParser, argv: list[str], command: str) -> frozenset[str]:
+    """The destinations ``argv`` sets explicitly (a default given by hand counts): the command's
+    options parsed again with every default suppressed."""
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
+    saved = [(a, a.default) for a in sub._actions]
+    try:
+        for a, _ in saved:
+            a.default = argparse.SUPPRESS
+        ns, _ = sub.parse_known_args(argv[argv.index(command) + 1:])
+    finally:
+        for a, d in saved:
+            a.default = d
+    return frozenset(vars(ns)) - {"func"}
 
 
 def _stdout_gone() -> bool:

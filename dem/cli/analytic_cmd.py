@@ -46,6 +46,11 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
     return float(v)
 
 
+def _lam(v: float | None, fmt: str = ".4f") -> str:
+    """A multiplier as printed: a number, or "-" where the analysis has none."""
+    return "-" if v is None else format(v, fmt)
+
+
 def run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
@@ -79,22 +84,23 @@ def run(args: argparse.Namespace) -> int:
     print(f"{label}  (config {args.config}, mu_joint {mu_j:g}, mu_base {mu_b:g})"
           + (f"  on piers {res['piers']['height']:g} m high, {res['piers']['width']:g} m wide, "
              f"{res['piers']['courses']} course(s)" if on_piers else ""))
+    if not res["stands"]:  # its multipliers are negative or missing: no load capacity to print
+        print("  the arch cannot stand under self-weight: no collapse multiplier (see --json for the analyses)")
+        return 1
     hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} {h['face'][:3]}" if "half" in h else
                    f"{h['pier'][0].upper()}P h={h['height_m']:.3f} m {h['face'][:3]}" for h in res["hinges_continuous"])
-    print(f"  continuous   lambda = {res['lambda_continuous']:.4f}   hinges: {hc}")
+    print(f"  continuous   lambda = {_lam(res['lambda_continuous'])}   hinges: {hc}")
     if on_piers:
         print(f"    ({res['continuous_message']})")
     hd = ", ".join(f"{h['joint']} {h['face'][:3]}" for h in res["hinges_discrete"])
-    print(f"  discrete     lambda = {res['lambda_discrete']:.4f}   hinges: {hd}")
+    print(f"  discrete     lambda = {_lam(res['lambda_discrete'])}   hinges: {hd}")
     act = ", ".join(f"{k} {v['state']}" for k, v in res["joints_lp"].items() if v["state"] != "closed")
-    print(f"  LP (friction) lambda = {res['lambda_lp'] if res['lambda_lp'] is None else round(res['lambda_lp'], 4)}   {act}   [{res['lp_status']}]")
+    print(f"  LP (friction) lambda = {_lam(res['lambda_lp'])}   {act}   [{res['lp_status']}]")
     if on_piers:
         print(f"  two-bar      ({res['two_bar_message']})")
     else:
-        print(f"  two-bar      lambda = {res['lambda_two_bar']:.4f}   mu* = {res['mu_star']:.3f}")
+        print(f"  two-bar      lambda = {_lam(res['lambda_two_bar'])}   mu* = {_lam(res['mu_star'], '.3f')}")
     for w in res["warnings"]:
         print(f"  warning: {w}")
-    if not res["stands"]:
-        print("  the arch cannot stand under self-weight")
     lam = res["lambda_continuous"]
     return 0 if lam is not None and math.isfinite(lam) else 1

@@ -7,7 +7,7 @@ import math
 
 from analytic.motions.records import read_record
 from analytic.rocking.domain import make_input
-from dem.common.options import print_json, writable_file
+from dem.common.options import figure_file, option_used, print_json
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
@@ -18,25 +18,31 @@ def _run_rock(args: argparse.Namespace) -> int:
     from analytic.rocking.dynamics import simulate
 
     rest = restitution_option(args.restitution)
-    if args.record is not None:
+    pulses = args.input in ("A", "B")
+    record = args.record is not None
+    option_used(args, "scale", record, "it scales a --record")
+    option_used(args, "amplitude", not record, "a --record is scaled by --scale")
+    option_used(args, "input", not record, "a --record is the input")
+    option_used(args, "freq", not record and not pulses, "it is a sine's (pulses A/B take --duration)")
+    option_used(args, "duration", not record and pulses, "it is the length of pulses A/B (a sine takes --freq)")
+    if record:
         if args.scale is None or not (args.scale > 0 and math.isfinite(args.scale)):
             raise ArchdemInputError("--scale (a positive factor) is needed with --record")
         if args.plot:
-            writable_file(args.plot, overwrite=False)
+            figure_file(args.plot)
         motion = read_record(args.record).scaled(args.scale)
         label, mech = build_mechanism(args)
         what = f"record {motion.name or args.record} x {args.scale:g}"
     else:
         if args.amplitude is None or not (math.isfinite(args.amplitude) and 0 < args.amplitude <= 100):
             raise ArchdemInputError(f"--amplitude (in g) must be a positive number up to 100, got {args.amplitude}")
-        pulses = args.input in ("A", "B")
         x = args.duration if pulses else args.freq
         if x is None:
             raise ArchdemInputError("--duration (s) is needed for pulses A/B" if pulses else "--freq (Hz) is needed for sines")
         if not (math.isfinite(x) and 0.01 <= x <= 100):
             raise ArchdemInputError(f"{'--duration [s]' if pulses else '--freq [Hz]'} must be in [0.01, 100], got {x:g}")
         if args.plot:
-            writable_file(args.plot, overwrite=False)
+            figure_file(args.plot)
         label, mech = build_mechanism(args)
         a = args.amplitude * G
         if args.input == "sine" and a < abs(mech.onset):

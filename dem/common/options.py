@@ -17,7 +17,7 @@ from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, 
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
-from specimens.io import can_make_dir, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.io import can_make_dir, check_name, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
@@ -225,6 +225,15 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
     return kw
 
 
+def require_standing(label: str, arch, **kw: Any) -> None:
+    """Refuse, in one line, an arch (``discretise`` keywords ``kw``) that cannot stand under its own
+    weight even without sliding: a test of its capacity would answer nothing."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.limit_discrete import require_standing as _require_standing
+
+    _require_standing(label, discretise(arch, **kw))
+
+
 #: Figure formats the commands write (matplotlib's, by the file's suffix).
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
@@ -234,6 +243,7 @@ def figure_file(path: str, option: str = "--plot"):
     p = Path(path)
     if p.suffix.lower() not in FIGURE_SUFFIXES:
         raise ArchdemInputError(f"{option} must end in {', '.join(FIGURE_SUFFIXES)}, got {p.name!r}")
+    check_name(p)
     if p.is_dir():
         raise ArchdemInputError(f"{option} {p} is a folder; give a file name")
     return writable_file(p, overwrite=False)
@@ -241,17 +251,98 @@ def figure_file(path: str, option: str = "--plot"):
 
 def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[str, bool]:
     """``(path, resume)`` of a study command's ``--out`` / ``--resume`` (one rule for every study):
-    a mistyped ``--resume`` name is refused rather than starting a new study under it."""
+    a mistyped ``--resume`` name is refused rather than starting a new study under it, and an
+    existing or unwritable ``--out`` before any run."""
 
-    if args.resume is not None and args.out:
+    if args.resume is not None and args.out is not None:
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
-    if args.resume is not None and not os.path.exists(args.resume):
+    if args.resume and os.path.isdir(args.resume):
+        raise ArchdemInputError(f"--resume {args.resume} is a folder; a study is one .h5 file")
+    if args.resume is not None and not os.path.isfile(args.resume):
         raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
     if args.resume:
         return args.resume, True
-    if args.out:
+    if args.out is not None:
+        out = Path(args.out)
+        if out.name:
+            check_name(out)
+        if not out.name or out.is_dir():
+            raise ArchdemInputError(f"--out {args.out!r}: give a study file name (STUDY.h5), not a folder")
+        if out.exists() or out.is_symlink():
+            raise ArchdemInputError(f"--out {out} exists; a study is never overwritten (resume it with --resume, "
+                                    "or choose another file)")
+        can_make_dir(out.parent)
         return args.out, False
     return str(unique_run_path(can_make_dir(default_dir), stem)), False
+
+
+#: Options that say where and how a study runs, not what it computes: outside its stored definition.
+RUN_OPTIONS = frozenset({"out", "resume", "workers", "scheduler", "plot", "json", "func", "command", "given"})
+
+
+def given(args: argparse.Namespace) -> frozenset[str]:
+    """The options the command line set by hand (``archdem`` records them; otherwise those set to
+    something other than None or False)."""
+    g = getattr(args, "given", None)
+    return frozenset(k for k, v in vars(args).items() if v is not None and v is not False) if g is None else frozenset(g)
+
+
+def common_rules(args: argparse.Namespace) -> None:
+    """The rules every command shares, checked before its own: an output given as an empty name (which
+    would mean no output at all), ``--workers`` beside ``--scheduler``."""
+    for dest in sorted(OUTPUT_OPTIONS & given(args)):
+        v = getattr(args, dest, None)
+        if isinstance(v, str) and not v.strip():
+            raise ArchdemInputError(f"{option_name(dest)} is empty; give a name")
+    option_used(args, "workers", not getattr(args, "scheduler", None), "a --scheduler's cluster runs the cases")
+
+
+#: Options that name an output or a study file.
+OUTPUT_OPTIONS = frozenset({"out", "plot", "report", "resume", "animate"})
+
+
+def option_name(dest: str) -> str:
+    """``--mu-base`` of the destination ``mu_base`` (``id``: the positional specimen id)."""
+    return "the specimen id" if dest == "id" else "--" + dest.replace("_", "-")
+
+
+def option_used(args: argparse.Namespace, dest: str, used: bool, why: str) -> None:
+    """One rule for options that do nothing in their context: ``dest`` given by hand where it is
+    not ``used`` is refused in one line, ``why`` saying what it belongs to."""
+    if not used and dest in given(args):
+        raise ArchdemInputError(f"{option_name(dest)} does nothing here: {why}")
+
+
+def study_definition(args: argparse.Namespace) -> dict:
+    """What a study command computes: its options but RUN_OPTIONS (stored in the study file)."""
+    return {k: v for k, v in vars(args).items() if k not in RUN_OPTIONS}
+
+
+def restore_study(args: argparse.Namespace) -> None:
+    """``--resume STUDY.h5``: the study's options from its file, so that a resume runs that study; an
+    option given by hand with another value is refused in one line (a study made without a stored
+    definition keeps the command line's)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.studies.sweep import canonical_json, stored_definition
+
+    if not os.path.isfile(args.resume):
+        return  # study_path refuses it in its words
+    stored = stored_definition(args.resume)
+    if stored is None:
+        return
+    mine = given(args)
+    for k, v in stored.items():
+        if k in RUN_OPTIONS or not hasattr(args, k):
+            continue
+        have = getattr(args, k)
+        if k in mine and canonical_json(have) != canonical_json(v):
+            raise ArchdemInputError(f"{option_name(k)} {_shown(have)} is not the study's ({args.resume} holds "
+                                    f"{_shown(v)}); resume without it, or start a new study with --out")
+        setattr(args, k, tuple(v) if isinstance(have, tuple) else v)
+
+
+def _shown(v: Any) -> str:
+    return " ".join(map(str, v)) if isinstance(v, (list, tuple)) else str(v)
 
 
 def add_friction_arguments(p: argparse.ArgumentParser, what: str = "") -> None:

@@ -77,7 +77,8 @@ def study_joints(specimen_id: str) -> dict:
     """The contact-law settings of the reference study's joints of a catalogue specimen (its Table 5.1:
     ``k_n`` and ``beta_R`` as printed)."""
     if specimen_id not in STUDY_JOINTS:
-        raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
+        what = "an arch by its parameters or a block (give a specimen id)" if specimen_id is None else repr(specimen_id)
+        raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {what}")
     kn, _, beta = STUDY_JOINTS[specimen_id]
     return {"contact_law": "compliant", "kn": kn, "damping_beta": beta}
 

@@ -18,7 +18,8 @@ flushes HDF5's metadata too, which a bare ``flush`` does not guarantee against a
 kill). Layout::
 
     /                attrs: archdem_study (layout version), case_function, study_attrs (JSON),
-                            seed (JSON), versions (JSON), created (UTC ISO time)
+                            seed (JSON), versions (JSON), created (UTC ISO time),
+                            definition (JSON: the command line's options, when run by one)
     /cases/<key>     attrs: params (JSON), status ("ok" | "failed"), error (traceback text),
                             wall (s), worker, finished (UTC ISO time)
     /cases/<key>/results/<name>   one dataset (or group, for a nested dict) per result
@@ -38,7 +39,9 @@ transient: a killed worker, a full disk; a deterministic failure simply fails ag
 recorded again). Cases stored in the file but absent from ``cases`` are kept in the file;
 ``resume=True`` on a file that does not exist yet starts a new study. A case group whose
 ``status`` attribute is missing (written last) was interrupted while being written and
-counts as not stored.
+counts as not stored. A study made by the command line stores its ``definition`` (the options
+that say what it computes); :func:`stored_definition` reads it back, so a resume runs that study
+whatever its command line leaves out.
 One process writes a study at a time: it holds ``.NAME.lock`` beside the file (see
 :func:`lock_path`), and a second one is refused at once instead of interleaving its cases.
 On a Dask cluster a worker that dies is retried by Dask; a case that kills workers
@@ -301,7 +304,21 @@ def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> 
     return StudyResult(path, attrs, records)
 
 
-def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
+def stored_definition(path: str | os.PathLike) -> dict | None:
+    """The ``definition`` a study file was made with (None for a study made without one)."""
+    try:
+        with h5py.File(path, "r") as f:
+            if "archdem_study" not in f.attrs:
+                raise ArchdemInputError(f"{path}: not an archdem study file; cannot resume it")
+            text = f.attrs.get("definition")
+    except OSError as exc:
+        reason = str(exc).split("(")[0].strip() or type(exc).__name__
+        raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({reason})") from None
+    return None if text is None else json.loads(text)
+
+
+def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool,
+                definition: dict | None = None) -> set[str]:
     """Create the study file, or check it for resuming; return the keys stored with status ok."""
 
     params_json, seed_json = canonical_json(study_attrs), canonical_json(seed)
@@ -330,6 +347,8 @@ def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None,
             f.attrs["seed"] = seed_json
             f.attrs["versions"] = canonical_json(_versions())
             f.attrs["created"] = _now()
+            if definition is not None:
+                f.attrs["definition"] = canonical_json(definition)
             f.create_group("cases")
     return set()
 
@@ -437,13 +456,14 @@ def _crash_error(exc: BaseException) -> str | None:
 # ----------------------------------------------------------------------------- run
 def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str | os.PathLike, workers: int | None = None,
               scheduler: str | None = None, resume: bool = False, progress: bool = True,
-              study_attrs: dict | None = None, seed: int | None = None) -> StudyResult:
+              study_attrs: dict | None = None, seed: int | None = None, definition: dict | None = None) -> StudyResult:
     """Run every case of a study and store each result in ``out_path`` as it finishes.
 
     ``workers``: local processes (default: all cores); ignored with ``scheduler``, a Dask
     scheduler address (``"tcp://HOST:PORT"``). ``study_attrs``: JSON-serialisable
     parameters common to the study (checked on resume). ``seed``: recorded and checked on
-    resume; the engine does not use it (put per-case seeds into the cases). Returns the
+    resume; the engine does not use it (put per-case seeds into the cases). ``definition``: the
+    command line's options, stored with a new study (see :func:`stored_definition`). Returns the
     records of ``cases`` in their order, read back from the file.
     Raises :class:`ArchdemInputError` (bad cases, existing file without ``resume``, a
     mismatching study on resume), :class:`StudyInterrupted` (a local worker died) and
@@ -465,7 +485,7 @@ def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str
         raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
     writable_dir(path.parent)
     with exclusive(lock_path(path), f"the study file {path}", remove=True):
-        done = _open_study(path, func_name, study_attrs, seed, resume)
+        done = _open_study(path, func_name, study_attrs, seed, resume, definition)
         todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
         if todo:
             _execute(todo, func, path, workers, scheduler, progress)

@@ -29,3 +29,25 @@ def test_any_text_gives_a_valid_grid_or_an_input_error(text):
     except ArchdemInputError:
         return
     assert 0 < len(vals) <= MAX_GRID_POINTS and all(v > 0 and v == v and v != float("inf") for v in vals)
+
+
+def test_outputs_are_checked_without_making_anything(tmp_path, monkeypatch):
+    """Empty names, folders, names too long for their temporary files, paths under a file or on a
+    mount that refuses writes: each one input error, and nothing made."""
+    from specimens.io import can_make_dir, exclusive, writable_dir, writable_file
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "f").write_text("x")
+    (tmp_path / "d").mkdir()
+    for bad, match in (("", "empty"), ("d", "is a folder"), ("a" * 250 + ".png", "too long"),
+                       ("f/x.png", "not a folder"), ("/proc/nowhere/x.png", "not writable")):
+        with pytest.raises(ArchdemInputError, match=match):
+            writable_file(bad)
+    for check in (can_make_dir, writable_dir):
+        with pytest.raises(ArchdemInputError, match="empty"):
+            check(" ")
+    assert writable_file("new/x.png") and not (tmp_path / "new").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["d", "f"]
+    with pytest.raises(ArchdemInputError, match="cannot make the lock file"):
+        with exclusive(tmp_path / ("." + "a" * 260 + ".lock"), "x"):
+            pass

@@ -54,6 +54,31 @@ from dem.core.ties import TieForces
 from specimens.mesh import prism
 
 
+#: Prefix of the folders holding a run's meshes: ``archdem-pb-<pid>-<random>`` in the temporary folder.
+MESH_DIR_PREFIX = "archdem-pb-"
+
+
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process
+        return True
+    return True
+
+
+def mesh_dir() -> Path:
+    """A new folder for one engine's meshes, named by this process; first the folders of processes
+    that are gone are removed (a killed run, SIGKILL included, cannot remove its own)."""
+    tmp = Path(tempfile.gettempdir())
+    for d in tmp.glob(f"{MESH_DIR_PREFIX}*-*"):
+        pid = d.name[len(MESH_DIR_PREFIX):].split("-")[0]
+        if pid.isdigit() and int(pid) != os.getpid() and not _pid_alive(int(pid)):
+            shutil.rmtree(d, ignore_errors=True)
+    return Path(tempfile.mkdtemp(prefix=f"{MESH_DIR_PREFIX}{os.getpid()}-"))
+
+
 def _rot_to_quat(R: np.ndarray) -> tuple[float, float, float, float]:
     q = Rotation.from_matrix(R).as_quat()  # x, y, z, w
     return tuple(float(x) for x in q)
@@ -157,7 +182,7 @@ class PyBulletEngine(Engine):
             raise RuntimeError("engine already built")
         self._pb = pb
         self._p = p = _quiet(lambda: BulletClient(connection_mode=pb.DIRECT))
-        self._tmp = Path(tempfile.mkdtemp(prefix="archdem-pb-"))
+        self._tmp = mesh_dir()
         self.model, self.settings = model, settings
         p.setPhysicsEngineParameter(
             fixedTimeStep=settings.dt, numSolverIterations=settings.solver_iterations, numSubSteps=0,

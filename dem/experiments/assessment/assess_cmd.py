@@ -17,6 +17,7 @@ from dem.common.options import (
     arch_from_args,
     default_of,
     discretisation_kwargs,
+    option_used,
     parse_grid,
     print_json,
     workers_option,
@@ -92,6 +93,7 @@ def _strip_options(args: argparse.Namespace) -> dict:
 
 def _strips(args: argparse.Namespace):
     if args.frp is None:
+        option_used(args, "frp_face", False, "it places the --frp strips")
         if args.masonry is not None or args.frp_modulus is not None:
             raise ArchdemInputError("--masonry and --frp-modulus belong to --frp (the strips they design)")
         return None
@@ -227,6 +229,9 @@ def _run(args: argparse.Namespace) -> int:
     from dem.experiments.assessment.run import assess_with_records
     from specimens.monuments import MONUMENTS
 
+    option_used(args, "engine", bool(args.records), "the engine runs the --records on the DEM")
+    for dest in ("frp_fibre", "frp_exposure", "frp_application"):
+        option_used(args, dest, args.frp is not None, "it designs the --frp strips")
     if args.id in MONUMENTS:
         return _run_monument(args, MONUMENTS[args.id])
     label, arch = arch_from_args(args)

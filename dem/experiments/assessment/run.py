@@ -13,6 +13,7 @@ from analytic.codes.kinematic import CONFIDENCE_FACTORS, Q_MASONRY, Height
 from analytic.motions.inputs import SampledMotion
 from analytic.motions.matching import MatchedRecord, match_record
 from analytic.motions.records import baseline_correct, read_record
+from analytic.limit.limit_discrete import require_standing
 from analytic.limit.ties import Tie, tie_link
 from analytic.rocking.linkage import governing_four_bar
 from dem.core.model import Model, from_assembly
@@ -172,6 +173,7 @@ def assess_with_records(target, records=(), site=None, *, configuration: str | N
         mech = sc.mechanism
         res = assess(mech, site, FC, q, limit_state, height, alpha0=sc.lam, sld_site=sld_site)
     else:
+        require_standing(label, discretise(arch, **kw))
         mech = governing_four_bar(arch, kw["density"], kw["contact"], kw["piers"],
                                   **({"n_voussoirs": n_voussoirs} if n_voussoirs is not None else {}))
         res = assess(mech, site, FC, q, limit_state, height, sld_site=sld_site)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import default_of, print_json, workers_option, writable_file
+from dem.common.options import default_of, figure_file, print_json, workers_option
 from dem.core.engines import available_engines
 from dem.core.settings import Settings
 from dem.experiments.compare_engines.run import FRICTIONS, compare, summary
@@ -18,14 +18,14 @@ def _run(args: argparse.Namespace) -> int:
     for e in engines:
         if e not in available_engines():
             raise ArchdemInputError(f"unknown engine {e!r}; available: {', '.join(available_engines())}")
-    if len(engines) != 2:
-        raise ArchdemInputError(f"give two engines to compare, got {len(engines)}")
+    if len(set(engines)) != 2 or len(engines) != 2:
+        raise ArchdemInputError(f"give two different engines to compare, got {args.engines!r}")
     frictions = ("none", "reference") if args.friction == "both" else (args.friction,)
     if args.workers < 1:
         raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
     base = Settings() if args.dt is None else Settings(dt=args.dt)
     if args.plot:
-        writable_file(args.plot)
+        figure_file(args.plot)
     rows = compare(ids, args.config, engines, frictions, base, workers=args.workers)
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)

@@ -18,8 +18,11 @@ from dem.common.options import (
     default_of,
     discretisation_kwargs,
     figure_file,
+    option_used,
     parse_grid,
     print_json,
+    require_standing,
+    study_definition,
     study_path,
     workers_option,
 )
@@ -57,6 +60,7 @@ def _structure(args: argparse.Namespace):
         return f"block-b{b:g}-h{h:g}", block_structure(2 * b, 2 * h, width, density), model
     label, arch = arch_from_args(args)
     kw = discretisation_kwargs(args, arch)
+    require_standing(label, arch, **kw)
     asm = discretise(arch, config=args.config, **kw)
     return label, arch_structure(arch, args.config, kw.get("n_voussoirs"), asm.contact, kw.get("piers"),
                                  kw.get("density")), from_assembly(asm, name=label)
@@ -114,6 +118,7 @@ def _groups(args: argparse.Namespace) -> tuple[list, dict]:
 
 def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dict:
     """Per frequency, the least collapsing amplitude of the nominal structure (``archdem threshold``)."""
+    option_used(args, "no_deterministic", info["input"] == "sine", "the deterministic thresholds are the sines'")
     if info["input"] != "sine" or args.no_deterministic:
         return {}
 
@@ -146,6 +151,8 @@ def _perturbation(args: argparse.Namespace, structure: dict):
 def _run(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import StudyInterrupted, check_scheduler
+    if args.realizations is None:
+        raise ArchdemInputError("give --realizations N (perturbed realisations per stripe)")
     label, structure, model = _structure(args)
     settings = _settings(args)
     pert = _perturbation(args, structure)
@@ -160,7 +167,7 @@ def _run(args: argparse.Namespace) -> int:
     try:
         res = fragility(label, structure, settings, pert, groups, args.realizations, args.seed, path,
                         workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
-                        deterministic=deterministic)
+                        deterministic=deterministic, definition=study_definition(args))
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}; continue with --resume {path}", file=sys.stderr)
         return 2
@@ -205,8 +212,8 @@ def register(sub) -> None:
     p.add_argument("--records", nargs="+", default=None, metavar="FILE", help="a suite of records (.AT2, .smc, ESM, CSV)")
     p.add_argument("--im", default=None, metavar="pga|pgv|sa:T", help="intensity measure of the records' stripes")
     p.add_argument("--stripes", default=None, metavar="GRID", help="intensities of the stripes (g; m/s for pgv)")
-    p.add_argument("--realizations", "--realisations", dest="realizations", type=int, required=True,
-                   help="perturbed realisations per stripe")
+    p.add_argument("--realizations", "--realisations", dest="realizations", type=int, default=None,
+                   help="perturbed realisations per stripe (needed; a resume takes the study's)")
     p.add_argument("--seed", type=int, default=0, help="seed of the realisations (default 0)")
     p.add_argument("--edge-loss", type=float, default=None, help="mean edge loss of every joint [mm] (arch; default 0)")
     p.add_argument("--edge-loss-sd", type=float, default=None,

@@ -219,9 +219,11 @@ def make_cases(label: str, structure: dict, settings: dict, perturbation: Pertur
 
 def fragility(label: str, structure: dict, settings: dict, perturbation: Perturbation, groups: list, n: int,
               seed: int, out_path: str | os.PathLike, workers: int | None = None, scheduler: str | None = None,
-              resume: bool = False, progress: bool = True, deterministic: dict | None = None) -> FragilityResult:
+              resume: bool = False, progress: bool = True, deterministic: dict | None = None,
+              definition: dict | None = None) -> FragilityResult:
     """Run (or resume) the study of ``groups`` x ``n`` realisations and fit each group's curve;
-    ``deterministic``: group -> threshold of the nominal structure, reported beside the fit."""
+    ``deterministic``: group -> threshold of the nominal structure, reported beside the fit;
+    ``definition``: the command line's options, stored with a new study."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.codes.fragility import fit_lognormal, stripes
     from dem.studies.sweep import case_key, run_study
@@ -231,7 +233,7 @@ def fragility(label: str, structure: dict, settings: dict, perturbation: Perturb
     attrs = {"study": STUDY_KIND, "label": label, "structure": structure, "settings": settings,
              "perturbation": perturbation.describe(), "n": n, "groups": [[g, u] for g, u, _ in groups]}
     res = run_study(cases, FRAGILITY_CASE, out_path, workers=workers, scheduler=scheduler, resume=resume,
-                    progress=progress, study_attrs=attrs, seed=int(seed))
+                    progress=progress, study_attrs=attrs, seed=int(seed), definition=definition)
     by_key = res.by_key
     curves, failed = [], []
     for name, unit, _ in groups:

@@ -10,14 +10,15 @@ from dem.common.options import (
     add_contact_law_arguments,
     add_engine_argument,
     add_pier_arguments,
+    can_make_dir,
     contact_law_settings,
     contact_option,
     default_of,
     piers_from_args,
     print_json,
+    study_definition,
     study_path,
     workers_option,
-    writable_dir,
 )
 from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
 from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
@@ -66,13 +67,14 @@ def _run(args: argparse.Namespace) -> int:
     settings = ({"engine": args.engine} if args.engine != default_of(Settings, "engine") else {}) | law
     path, resume = study_path(args, "runs/map", f"map-{args.config}")
     if args.plot:
-        writable_dir(args.plot)
+        can_make_dir(args.plot)
     try:
         res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
                             scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
                             protocol={"kind": "hold", "tol": args.tol},
                             settings=settings or None,
-                            contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers)
+                            contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers,
+                            definition=study_definition(args))
     except StudyInterrupted as exc:
         print(f"archdem: study interrupted: {exc}", file=sys.stderr)
         return 2

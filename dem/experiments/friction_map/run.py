@@ -355,7 +355,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   protocol: dict | None = None, settings: dict | None = None, func: Callable[[dict], dict] = DEM_CASE,
                   n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
                   contact: float | Mapping[str, float] = 1.0, piers=None,
-                  law: Mapping[str, dict] | None = None) -> MapResult:
+                  law: Mapping[str, dict] | None = None, definition: dict | None = None) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each
@@ -368,7 +368,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     ``contact``: the effective contact of every joint (DEM cases and the LP / continuous references),
     or specimen id -> contact; ``piers``: every specimen stands on these
     :class:`~specimens.piers.Piers` (the same sizes for all); ``law``: specimen id -> the contact-law
-    settings of its joints (``dem.core.contact.study_joints``), merged into ``settings``.
+    settings of its joints (``dem.core.contact.study_joints``), merged into ``settings``; ``definition``:
+    the command line's options, stored with a new study (``dem.studies.sweep.stored_definition``).
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
@@ -417,7 +418,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
             kinds[s.id][case_key(c)] = "grid"
             round_cases.append(c)
     run_study(round_cases, func, out_path, workers=workers, scheduler=scheduler, resume=resume,
-              progress=progress, study_attrs=study_attrs)
+              progress=progress, study_attrs=study_attrs, definition=definition)
     rounds = 0
     for _ in range(refine):
         res = load_study(out_path, [c for s in specs for c in cases_of[s.id]])

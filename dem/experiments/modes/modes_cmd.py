@@ -13,6 +13,7 @@ from dem.common.options import (
     default_of,
     discretisation_kwargs,
     figure_file,
+    option_used,
     print_json,
 )
 from dem.core.contact import normal_stiffness
@@ -46,6 +47,7 @@ def _stiffness(args: argparse.Namespace, structure) -> tuple[float, float | None
 
     if (args.kn is None) == (args.youngs is None):
         raise ArchdemInputError("give the joints' stiffness as --kn PA_PER_M or as --youngs E_PA")
+    option_used(args, "poisson", args.kn is None and args.ks is None, "it gives k_s from --youngs, without --ks")
     if args.kn is not None:
         return args.kn, args.ks
     if not (math.isfinite(args.youngs) and args.youngs > 0):

@@ -17,11 +17,12 @@ from dem.common.options import (
     contact_law_settings,
     default_of,
     discretisation_kwargs,
+    figure_file,
+    option_used,
     parse_grid,
     piers_from_args,
     print_json,
     workers_option,
-    writable_file,
 )
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.step_shake import SHAKE_FREQS
@@ -138,6 +139,8 @@ def _run_domain(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.rocking.impact import post_impact
 
+    for dest in ("config", "mu_joint", "mu_base"):
+        option_used(args, dest, False, "it is the DEM's (--engine dem)")
     rest = restitution_option(args.restitution)
     pulses = args.input in ("A", "B")
     if pulses and args.freq is not None:
@@ -155,7 +158,7 @@ def _run_domain(args: argparse.Namespace) -> int:
     if not 0.01 <= min(xs) <= max(xs) <= 100:
         raise ArchdemInputError(f"{'--durations [s]' if pulses else '--freq [Hz]'} values must be in [0.01, 100]")
     if args.plot:
-        writable_file(args.plot, overwrite=False)
+        figure_file(args.plot)
     label, mech = build_mechanism(args)
     dom = failure_domain(mech, args.input, xs, a_max_ratio=args.amax, n_scan=args.scan, tol=args.tol,
                          restitution=rest, workers=args.workers)
@@ -217,10 +220,12 @@ def dem_domain(args: argparse.Namespace) -> int:
         raise ArchdemInputError("--engine dem runs one-cycle sines only (--input sine0)")
     if getattr(args, "durations", None) is not None:
         raise ArchdemInputError("--engine dem takes --freq, not --durations")
+    for dest in ("model", "layout", "restitution", "scan", "tol"):
+        option_used(args, dest, False, "it belongs to the analytic linkage (--engine analytic)")
 
     freqs = parse_grid(args.freq) if args.freq is not None else list(SHAKE_FREQS)
     if args.plot:
-        writable_file(args.plot, overwrite=False)
+        figure_file(args.plot)
     label, arch = arch_from_args(args)
     law = contact_law_settings(args, getattr(args, "id", None))
     dem_a_max = default_of(dem_failure_domain, "a_max_ratio")

@@ -19,6 +19,7 @@ from dem.common.options import (
     discretisation_kwargs,
     figure_file,
     print_json,
+    require_standing,
     writable_dir,
 )
 from dem.core.model import from_assembly
@@ -41,6 +42,7 @@ def model_and_settings(args: argparse.Namespace):
         raise ArchdemInputError("give a specimen id or the arch parameters")
     _positive("--mu-joint", args.mu_joint)
     _positive("--mu-base", args.mu_base)
+    require_standing(label, arch, **discretisation_kwargs(args, arch))
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine,
           **contact_law_settings(args, args.id)}

@@ -11,10 +11,10 @@ from specimens.io import atomic_path, to_json
 
 def _run(args: argparse.Namespace) -> int:
     src = args.experiments or LAB_TILT_TESTS
-    tests = read_experiments(src)  # first: a bad table leaves nothing behind, not even a folder
-    out = writable_file(args.out)
+    out = writable_file(args.out)  # checked, not made: a bad table leaves nothing behind, not even a folder
     if out.exists() and not args.replace:
         raise ArchdemInputError(f"{out} holds a calibration already; it is kept unless you give --replace")
+    tests = read_experiments(src)
     cal = calibrate(tests, scatter=not args.no_scatter, source=args.experiments or f"archdem's {LAB_TILT_TESTS.name}")
     with atomic_path(out, overwrite=args.replace) as tmp:
         tmp.write_text(to_json(cal.to_json(), indent=2))

@@ -15,7 +15,9 @@ from dem.common.options import (
     default_of,
     discretisation_kwargs,
     figure_file,
+    option_used,
     print_json,
+    require_standing,
     workers_option,
     writable_dir,
 )
@@ -39,12 +41,15 @@ def _run(args: argparse.Namespace) -> int:
         if not (math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"--{name.replace('_', '-')} must be a positive number, got {v}")
     law = contact_law_settings(args, args.id)
+    require_standing(label, arch, **discretisation_kwargs(args, arch))
     if args.ensemble is not None:
         if law:
             raise ArchdemInputError("an ensemble runs rigid joints: drop --contact-law/--kn/--damping-*/--joints")
         return _run_ensemble(args, label, arch)
     if args.seed is not None or args.scatter is not None or args.workers is not None:
         raise ArchdemInputError("--seed, --scatter and --workers go with --ensemble N")
+    for dest in ("start", "full_hold"):
+        option_used(args, dest, args.protocol == "hold", "it belongs to --protocol hold")
     asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
     kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": args.planar, "engine": args.engine, **law}
     if args.dt is not None:

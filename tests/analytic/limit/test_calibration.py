@@ -72,6 +72,15 @@ def _write(tmp_path, text):
     ("id,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,-0.2,0.02,rocking\n", "lambda_mean > 0"),
     ("id,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,0.27,0.02,toppling\n", "rocking or sliding"),
     ("id,lambda_mean,lambda_sd,observed_mode\n", "no laboratory tests"),
+    # taken on trust before: a zero scatter, a multiplier no arch of that size holds, Re below Ri,
+    # a catalogue specimen's geometry columns that are not its own
+    ("id,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,0.27,0,rocking\n", "lambda_sd > 0"),
+    ("id,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,50,0.02,rocking\n", "beyond the multiplier of the arch"),
+    ("id,Ri_mm,Re_mm,e_mm,lambda_mean,lambda_sd,observed_mode\nmine,350,300,100,0.2,0.01,rocking\n", "0 < Ri_mm < Re_mm"),
+    ("id,Ri_mm,Re_mm,e_mm,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,264,216,40,0.27,0.02,rocking\n",
+     "0 < Ri_mm < Re_mm"),
+    ("id,Ri_mm,Re_mm,e_mm,lambda_mean,lambda_sd,observed_mode\nSh02-Sd020,216,300,40,0.27,0.02,rocking\n",
+     "are not the catalogue's 216/264/40 mm"),
 ])
 def test_bad_tables_are_refused_in_one_line(tmp_path, text, match):
     with pytest.raises(ArchdemInputError, match=match) as exc:

@@ -325,3 +325,18 @@ def test_a_corrupted_record_is_read_sanely_or_refused_in_one_line(tmp_path, name
     assert RECORD_DT_RANGE[0] <= m.dt <= RECORD_DT_RANGE[1]
     assert m.duration >= MIN_RECORD_S and np.all(np.isfinite(m.values))
     assert np.max(np.abs(m.values)) / G <= MAX_RECORD_PGA_G
+
+
+@pytest.mark.parametrize("values, scale, match", [
+    (np.zeros(1000), 1.0, "is all zeros"),
+    (np.sin(np.arange(1000) * 0.3), 3e-10 * G, "peaks at 3e-10 g"),
+    (np.sin(np.arange(1000) * 0.3), 0.0, "is all zeros"),
+])
+def test_a_motion_below_an_accelerometers_resolution_is_refused(values, scale, match):
+    """A record of zeros, or scaled far below 1e-6 g, moves nothing: refused, not simulated for minutes."""
+    with pytest.raises(ArchdemInputError, match=match):
+        SampledMotion(values, 0.01, scale)
+    m = SampledMotion(np.sin(np.arange(1000) * 0.3), 0.01)
+    with pytest.raises(ArchdemInputError, match="peaks at"):
+        m.scaled(1e-9)
+    assert m.scaled(2e-6 * G).pga == pytest.approx(2e-6 * G)  # just above the floor: a motion

@@ -144,3 +144,10 @@ def test_a_sigkilled_campaign_leaves_no_worker_and_resumes(tmp_path):
     with open(out / "tilt" / "tilt.csv") as fh:
         rows = list(csv.DictReader(fh))
     assert len(rows) == 3 and all(0.1 < float(r["lambda_dem_reference"]) < 1.0 for r in rows)
+
+
+def test_a_finished_campaign_folder_keeps_no_lock(tmp_path):
+    from dem.campaign.runner import LOCK_FILE, run_campaign
+
+    run_campaign(CampaignContext(out=tmp_path, specimens=select_specimens("Sh02-Sd020"), log=lambda s: None), ["catalogue"])
+    assert (tmp_path / "catalogue" / "catalogue.csv").is_file() and not (tmp_path / LOCK_FILE).exists()

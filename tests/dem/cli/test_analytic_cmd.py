@@ -34,3 +34,12 @@ def test_bad_input_exit_2(capsys):
     assert main(["analytic", "Sh06-Sd015", "--effective-thickness", "1.5"]) == 2
     assert "effective-thickness" in capsys.readouterr().err
     assert main(["analytic", "nope"]) == 2
+
+
+def test_an_arch_that_cannot_stand_says_so_without_multipliers(capsys):
+    """No negative multiplier printed before "cannot stand", and no None formatted (very tall thin piers)."""
+    for argv in (["analytic", "--Sh", "0", "--Sd", "0.03", "--Rc", "0.2"],
+                 ["analytic", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "0.2", "--pier-height", "50", "--pier-width", "0.05"]):
+        assert main(argv) == 1
+        out = capsys.readouterr().out
+        assert "cannot stand under self-weight" in out and "lambda =" not in out

@@ -91,7 +91,7 @@ from dem.cli import main
     (["draw", "Sh02-Sd020", "--voussoirs", "100000", "--out", "v.png"], "--voussoirs must be 1 to 100"),
     (["map", "--specimens", "Sh02-Sd020", "--resume", "old.png"], "not a readable HDF5 study file"),
     (["map", "--specimens", "Sh02-Sd020", "--resume", "typo.h5"], "no such study file; start a new study with --out"),
-    (["map", "--specimens", "Sh02-Sd020", "--resume", ""], "no such study file"),
+    (["map", "--specimens", "Sh02-Sd020", "--resume", ""], "--resume is empty"),
     # piers
     (["draw", "Sh02-Sd020", "--out", "p.png", "--pier-height", "-0.2", "--pier-width", "0.1"], "--pier-height must be a length"),
     (["tilt", "Sh02-Sd020", "--out", "t", "--pier-height", "nan", "--pier-width", "0.1"], "--pier-height must be a length"),

@@ -351,3 +351,19 @@ def test_a_scheduler_lost_mid_study_leaves_a_resumable_study(tmp_path):
     assert 2 <= done < len(cases)
     res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
     assert [r.status for r in res] == ["ok"] * len(cases)
+
+
+def test_the_definition_of_a_new_study_is_stored_and_a_resume_keeps_it(tmp_path):
+    from dem.studies.sweep import stored_definition
+
+    p = tmp_path / "s.h5"
+    run_study(_cases(2), FUNC, p, workers=1, progress=False, definition={"mu": "0.4,0.8", "specimens": "A,B"})
+    assert stored_definition(p) == {"mu": "0.4,0.8", "specimens": "A,B"}
+    # a resume does not rewrite it, whatever it is given
+    run_study(_cases(3), FUNC, p, workers=1, resume=True, progress=False, definition={"mu": "other"})
+    assert stored_definition(p) == {"mu": "0.4,0.8", "specimens": "A,B"}
+    run_study(_cases(1), FUNC, tmp_path / "bare.h5", workers=1, progress=False)
+    assert stored_definition(tmp_path / "bare.h5") is None
+    (tmp_path / "x.h5").write_text("not hdf5")
+    with pytest.raises(ArchdemInputError, match="not a readable HDF5 study file"):
+        stored_definition(tmp_path / "x.h5")

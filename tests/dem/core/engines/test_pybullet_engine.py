@@ -1,7 +1,14 @@
 """PyBullet backend specifics (the validation shared with every engine is in test_engines_shared.py)."""
+import signal
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
 import pytest
 
 from dem.core.engines import get_engine
+from dem.core.engines.pybullet_engine import mesh_dir
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from specimens.blocks import discretise
@@ -29,3 +36,19 @@ def test_friction_product_rule_gives_the_requested_pairs():
         assert all(a * f_base == pytest.approx(1.0, rel=1e-12) for a in f)
     finally:
         e.close()
+
+
+def test_the_mesh_folder_of_a_killed_run_is_removed_by_the_next_one(tmp_path, monkeypatch):
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    code = ("import sys, time; from dem.core.engines.pybullet_engine import mesh_dir; "
+            "print(mesh_dir(), flush=True); time.sleep(60)")
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+    left = Path(p.stdout.readline().strip())
+    p.send_signal(signal.SIGKILL)  # no handler runs: the folder stays behind
+    p.wait()
+    assert left.is_dir() and left.parent == tmp_path
+    mine = mesh_dir()
+    assert not left.exists() and mine.is_dir() and mine.parent == tmp_path
+    other = mesh_dir()  # a live process's folder (this one's) is kept
+    assert mine.is_dir() and other.is_dir()

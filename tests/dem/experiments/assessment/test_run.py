@@ -10,6 +10,8 @@ from analytic.motions.spectra import ec8, rebuild
 from dem.cli import main
 from dem.experiments.assessment.run import assess_with_records
 from specimens.constants import G
+from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
 from specimens.piers import Piers
 
 
@@ -49,3 +51,8 @@ def test_a_tie_and_the_sld_hazard_as_the_command_line(capsys):
     assert a.assessment.safety_index == pytest.approx(d["safety_index"], rel=1e-12)
     assert a.strengthened.lam == pytest.approx(d["tie"]["lambda"], rel=1e-12) and a.strengthened.lam > d["alpha0"]
     assert a.strengthened_assessment.safety_index == pytest.approx(d["tie"]["safety_index"], rel=1e-12)
+
+
+def test_an_arch_that_cannot_stand_is_refused_before_the_work():
+    with pytest.raises(ArchdemInputError, match="cannot stand under its own weight"):
+        assess_with_records(PointedArch.from_ratios(0.0, 0.03, 0.2), site=ec8(0.2 * G, "A", 1))

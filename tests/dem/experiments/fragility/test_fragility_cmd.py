@@ -1,6 +1,8 @@
 """``archdem fragility``: sine stripes and a record suite, the JSON answer, the tables, resume."""
 import json
+import shutil
 
+import h5py
 import pytest
 
 from dem.cli import main
@@ -28,6 +30,15 @@ def test_sine_stripes_json_tables_and_resume(tmp_path, capsys):
     assert len(rows) == 4 and (tmp_path / "f-fits.csv").exists()
     again = _json(capsys, [*argv, "--resume", str(study)])  # nothing left to run: the same answer
     assert again["points"] == d["points"]
+    # interrupted (one run missing) and resumed with the file alone: the study it holds, not a default
+    cut = tmp_path / "cut.h5"
+    shutil.copy(study, cut)
+    with h5py.File(cut, "a") as f:
+        del f["cases"][sorted(f["cases"])[0]]
+    bare = _json(capsys, ["fragility", "--resume", str(cut), "--json"])
+    assert bare["points"] == d["points"] and bare["deterministic_threshold"] == d["deterministic_threshold"]
+    assert main(["fragility", "--resume", str(cut), "--realizations", "2"]) == 2
+    assert "--realizations 2 is not the study's" in capsys.readouterr().err
 
 
 def test_a_record_suite_in_stripes_of_pga_and_sa(tmp_path, short_records, capsys):
