@@ -409,6 +409,9 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     nj = len(joints)
     if nj < 4:
         raise ArchdemInputError("a four-hinge mechanism needs at least 4 joints")
+    if not getattr(assembly, "is_chain", True):
+        raise ArchdemInputError("the four-hinge enumeration needs the blocks in one chain from the ground to the ground; "
+                                "this assembly is not one (the static LP takes any assembly)")
     L = assembly.length_scale
     corners = np.array([j.contact_points for j in joints]) / L  # (nj, 2 faces, 2)
     normals = np.array([j.normal for j in joints])
@@ -443,8 +446,8 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     jj, ff = J[k], Fc[k]
     hinges = tuple((joints[q].name, FACES[fc]) for q, fc in zip(jj, ff))
     blocks = tuple(_macro_block(assembly.bodies, int(lo[k, i]), int(hi[k, i])) for i in range(3))
-    # a layout of radial cuts describes hinges on the ring only; a pier joint is no radial cut
-    layout = None if any(joints[q].in_pier for q in jj) else FourHingeLayout(
+    # a layout of radial cuts describes hinges on a parametric ring only; a pier joint is no radial cut
+    layout = None if getattr(assembly, "arch", True) is None or any(joints[q].in_pier for q in jj) else FourHingeLayout(
         tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc], f) for q, fc in zip(jj, ff)), blocks)
     lam_k = float(lam[k])
     msg = "ok" if lam_k >= 0 else f"the arch cannot stand under self-weight (lambda = {lam_k:.4g} < 0)"
