@@ -493,7 +493,15 @@ def governing_four_bar(arch: PointedArch, density: float = 500.0, contact: float
                        **discretise_kw) -> FourBar:
     """The four-bar of the arch's governing mechanism, opened by a positive ground acceleration: the
     continuous ring's minimum, or on ``piers`` the discrete mechanism through them (the assembly cut
-    with ``discretise_kw``)."""
+    with ``discretise_kw``). A drawn assembly (:mod:`specimens.drawn`) in place of ``arch``: its own
+    minimum discrete mechanism."""
+    from specimens.blocks import Assembly
+
+    if isinstance(arch, Assembly):
+        from specimens.blocks import discretise
+
+        return mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers, **discretise_kw),
+                                  direction=1)
     if piers is None:
         return minimised_four_bar(arch, density, direction=1, contact=contact)
     from specimens.blocks import discretise

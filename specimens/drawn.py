@@ -76,9 +76,10 @@ class DrawnAssembly(Assembly):
         # reached only for attributes a dataclass field or property does not provide
         if name in ARCH_ONLY:
             raise ArchdemInputError(
-                f"this analysis needs a parametric arch ({name}); the drawn assembly "
-                f"{self.source.get('file', '')!s} has none: use the static LP, the mechanism enumeration, "
-                "tilt, shake, thresholds, fragility or the code assessment")
+                f"{self.source.get('file') or 'this drawing'} holds blocks, not a two-centred arch: this needs the "
+                f"arch's parameters ({name}; the continuous ring, the two-bar, the calibrated contact and the "
+                "imperfect-joint ensembles do); a drawing takes the LP, tilt, shake, threshold, modes, "
+                "assess, draw, mesh, and rock/domain with --layout discrete")
         raise AttributeError(name)
 
     @property

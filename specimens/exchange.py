@@ -33,6 +33,8 @@ DXF_UNITS = {1: "in", 2: "ft", 4: "mm", 5: "cm", 6: "m"}
 FORMATS = {".dxf": "dxf", ".csv": "csv", ".obj": "obj", ".stl": "stl"}
 _DEPTH = re.compile(r"depth[ _-]*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)", re.IGNORECASE)
 _META_KEYS = ("length_scale", "size")
+#: The example structure shipped with archdem: a pointed arch on piers as built (specimens/data/README.md).
+EXAMPLE_DRAWING = Path(__file__).resolve().parent / "data" / "survey-arch-on-piers.dxf"
 
 
 def role(layer: str) -> str:

@@ -70,7 +70,7 @@ def test_a_contact_within_the_tolerance_is_a_joint_and_beyond_it_is_not():
 
 def test_a_drawn_assembly_says_in_one_line_that_it_has_no_arch():
     asm = assemble([block("A", rect(0, 0, 0.2, 0.4))])
-    with pytest.raises(ArchdemInputError, match="needs a parametric arch") as exc:
+    with pytest.raises(ArchdemInputError, match="holds blocks, not a two-centred arch: this needs the arch.s parameters") as exc:
         asm.Sh  # noqa: B018
     assert "\n" not in str(exc.value)
     with pytest.raises(AttributeError):
