@@ -78,7 +78,7 @@ class DrawnAssembly(Assembly):
             raise ArchdemInputError(
                 f"{self.source.get('file') or 'this drawing'} holds blocks, not a two-centred arch: this needs the "
                 f"arch's parameters ({name}; the continuous ring, the two-bar, the calibrated contact and the "
-                "imperfect-joint ensembles do); a drawing takes the LP, tilt, shake, threshold, modes, "
+                "imperfect-joint ensembles do); a drawing takes the LP, tilt, shake, threshold, fragility, modes, "
                 "assess, draw, mesh, and rock/domain with --layout discrete")
         raise AttributeError(name)
 
@@ -111,17 +111,65 @@ class DrawnAssembly(Assembly):
 
     def parameters(self) -> dict:
         return {"drawing": dict(self.source), "density": self.density, "contact": self.contact,
-                "length_scale": self.length_scale, "size": self.size}
+                "length_scale": self.length_scale, "size": self.size,
+                **({"bands": {j.name: list(j.band) for j in self.joints}} if self.imperfect else {})}
 
+    def with_bands(self, bands: dict[str, tuple[float, float]], contact: float | None = None) -> "DrawnAssembly":
+        """The same blocks with each named joint touching within its own band (fractions of its depth from
+        ``p_i``), e.g. a realisation of :class:`specimens.imperfection.Imperfection`; ``contact``: the
+        nominal fraction recorded beside them."""
+        from specimens.blocks import check_band
+
+        unknown = set(bands) - {j.name for j in self.joints}
+        if unknown:
+            raise ArchdemInputError(f"contact bands given for joints this assembly does not have: {sorted(unknown)}")
+        if self.contact != 1.0 or self.imperfect:
+            raise ValueError("relieve the full blocks (contact 1), not blocks relieved already")
+        joints = tuple(replace(j, band=check_band(bands[j.name], j.name)) if j.name in bands else j for j in self.joints)
+        blocks, bodies = _relieved(list(self.blocks), list(self.bodies), list(joints))
+        return replace(self, blocks=tuple(blocks), bodies=tuple(bodies), joints=joints, imperfect=True,
+                       contact=float(self.contact if contact is None else contact))
+
+    def to_dict(self) -> dict:
+        """Everything that makes this assembly, JSON-ready (full blocks, contact 1): a worker rebuilds it
+        bit for bit with :func:`from_dict`, without the drawing's file."""
+        if self.contact != 1.0 or self.imperfect:
+            raise ValueError("to_dict describes the full blocks (contact 1)")
+        return {"bodies": [{"name": b.name, "outline": b.outline.tolist(), "pieces": [p.tolist() for p in b.pieces],
+                            "depth": b.width} for b in self.bodies],
+                "joints": [{"name": j.name, "a": j.a, "b": j.b, "p_i": j.p_i.tolist(), "p_e": j.p_e.tolist()}
+                           for j in self.joints],
+                "density": self.density, "length_scale": self.length_scale_m, "size": self.size_m,
+                "chain": self.chain, "source": dict(self.source)}
     def with_contact(self, contact: float) -> "DrawnAssembly":
         """The same blocks with every joint touching within its central ``contact`` fraction
         (pieces relieved at the joints; masses kept)."""
         c = check_contact(contact)
-        if c == self.contact:
+        if c == self.contact and not self.imperfect:
             return self
+        if self.contact != 1.0 or self.imperfect:
+            raise ValueError("relieve the full blocks (contact 1), not blocks relieved already")
         joints = tuple(replace(j, band=central_band(c)) for j in self.joints)
         blocks, bodies = _relieved(list(self.blocks), list(self.bodies), list(joints)) if c < 1 else (self.blocks, self.bodies)
         return replace(self, blocks=tuple(blocks), bodies=tuple(bodies), joints=joints, contact=c)
+
+
+def from_dict(d: dict) -> DrawnAssembly:
+    """The assembly :meth:`DrawnAssembly.to_dict` described (the same floats: the same model)."""
+    bodies, blocks = [], []
+    for k, b in enumerate(d["bodies"]):
+        o = np.asarray(b["outline"], float)
+        pieces = tuple(np.asarray(p, float) for p in b["pieces"])
+        blocks.append(Block(b["name"], o, pieces, np.zeros((0, 2)), np.zeros((0, 2))))
+        bodies.append(_make_body(k, b["name"], (b["name"],), o, pieces, polygon_properties(o), float(d["density"]),
+                                 float(b["depth"])))
+    joints = []
+    for k, j in enumerate(d["joints"]):
+        p, q = np.asarray(j["p_i"], float), np.asarray(j["p_e"], float)
+        joints.append(Joint(k, j["name"], int(j["a"]), int(j["b"]), p, q, joint_normal(p, q), 0.0))
+    return DrawnAssembly(None, "free", "drawn", 0, 0.0, float(d["density"]), 0, tuple(blocks), tuple(bodies),
+                         tuple(joints), np.zeros(0), 1.0, False, None, dict(d.get("source", {})),
+                         float(d["length_scale"]), float(d["size"]), bool(d["chain"]))
 
 
 # ---------------------------------------------------------------------------------------------

@@ -43,6 +43,12 @@ def _structure(args: argparse.Namespace):
     label, arch = arch_from_args(args)
     kw = discretisation_kwargs(args, arch)
     asm = discretise(arch, config=args.config, **kw)
+    if asm.arch is None:  # a drawing (--geometry): its joints' edge loss is the perturbation's, not --contact
+        from dem.experiments.fragility import drawing_structure
+
+        if asm.contact != 1.0:
+            raise ArchdemInputError("a drawing's fragility takes its joints' contact from --edge-loss, not --contact")
+        return label, drawing_structure(asm), from_assembly(asm, name=label)
     return label, arch_structure(arch, args.config, kw.get("n_voussoirs"), asm.contact, kw.get("piers"),
                                  kw.get("density")), from_assembly(asm, name=label)
 

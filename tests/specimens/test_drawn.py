@@ -108,3 +108,39 @@ def test_bad_drawings_are_refused_in_one_line(blocks, supports, message):
     with pytest.raises(ArchdemInputError, match=message) as exc:
         assemble(blocks, supports)
     assert "\n" not in str(exc.value)
+
+
+def test_a_drawn_assembly_described_and_rebuilt_is_the_same_to_the_bit():
+    import json
+
+    from specimens.drawn import from_dict
+    from specimens.exchange import EXAMPLE_DRAWING, read_assembly
+
+    asm = read_assembly(EXAMPLE_DRAWING)
+    back = from_dict(json.loads(json.dumps(asm.to_dict())))
+    for x, y in zip(asm.bodies, back.bodies):
+        assert (x.name, x.mass, x.width) == (y.name, y.mass, y.width) and np.array_equal(x.inertia, y.inertia)
+        assert all(np.array_equal(p, q) for p, q in zip(x.pieces, y.pieces))
+    for j, k in zip(asm.joints, back.joints):
+        assert (j.name, j.a, j.b) == (k.name, k.a, k.b) and np.array_equal(j.normal, k.normal)
+    assert (back.length_scale, back.size, back.is_chain, back.crown_index) == (asm.length_scale, asm.size, True,
+                                                                                asm.crown_index)
+    assert solve_lp(back, 0.577, 1.0).lam == solve_lp(asm, 0.577, 1.0).lam
+
+
+def test_an_imperfect_realisation_of_a_drawing_loses_its_edges_joint_by_joint():
+    from specimens.exchange import EXAMPLE_DRAWING, read_assembly
+    from specimens.imperfection import Imperfection, realise_drawn
+
+    asm = read_assembly(EXAMPLE_DRAWING)
+    assert realise_drawn(asm, Imperfection(0.0, 1e-3), None) is asm
+    nominal = realise_drawn(asm, Imperfection(5e-3, 1e-3), None)  # 5 mm off each edge of every joint
+    for j in nominal.joints:
+        lo, hi = j.band
+        assert lo * j.length == pytest.approx(5e-3) and (1 - hi) * j.length == pytest.approx(5e-3)
+    one, again = (realise_drawn(asm, Imperfection(5e-3, 1e-3), 7, 3) for _ in range(2))
+    assert [j.band for j in one.joints] == [j.band for j in again.joints] != [j.band for j in nominal.joints]
+    assert [b.mass for b in one.bodies] == [b.mass for b in asm.bodies]  # relieved pieces, the full blocks' masses
+    assert solve_lp(one, math.inf, math.inf).lam < solve_lp(asm, math.inf, math.inf).lam
+    with pytest.raises(ArchdemInputError, match="leaves less than"):
+        realise_drawn(asm, Imperfection(0.2, 0.0), None)

@@ -74,3 +74,17 @@ def test_an_irregular_arch_on_piers_tilts_at_its_lp_without_sliding():
     r = tilt(from_assembly(asm, name="survey"), Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), assembly=asm)
     assert r.lam == pytest.approx(lp.lam, rel=0.03)
     assert r.mode == "rocking"
+
+
+def test_a_fragility_case_carries_the_drawing_whole():
+    """A worker rebuilds the drawn structure from the case alone; unperturbed, it is the nominal model."""
+    from dem.experiments.fragility import _model, drawing_structure
+
+    asm = read_assembly(EXAMPLE_DRAWING)
+    pert = {"edge_loss": 0.0, "edge_loss_sd": 0.0, "size_sd": 0.0, "friction_cov": 0.0}
+    a, b = from_assembly(asm), _model(drawing_structure(asm), pert, 1, 0)
+    assert all(np.array_equal(p, q) for x, y in zip(a.bodies, b.bodies) for p, q in zip(x.pieces, y.pieces))
+    assert [x.mass for x in a.bodies] == [x.mass for x in b.bodies] and a.size == b.size
+    perturbed = _model(drawing_structure(asm), {**pert, "edge_loss_sd": 0.25e-3}, 1, 0)
+    assert perturbed.source["contact"] == 1.0 and any(j.band != (0.0, 1.0) for j in perturbed.assembly.joints)
+    assert perturbed.source["bands"]  # the engines read relieved joints from it
