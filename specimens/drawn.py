@@ -368,21 +368,31 @@ class _Contact:
     n: np.ndarray  # from a to b
 
 
-def _find_contacts(polys: list[np.ndarray], supports: list[np.ndarray], tol: float) -> list[_Contact]:
-    boxes = [(p.min(0) - tol, p.max(0) + tol) for p in polys]
-    out: list[_Contact] = []
+def _near_pairs(polys: list[np.ndarray], supports: list[np.ndarray], tol: float) -> list[tuple[int, int]]:
+    """``(i, j)`` with i < j blocks, or j = -1 - k for support k, whose boxes meet within ``tol``."""
+    lo = np.array([p.min(0) for p in polys]) - tol
+    hi = np.array([p.max(0) for p in polys]) + tol
+    slo = np.array([s.min(0) for s in supports]).reshape(-1, 2) - tol
+    shi = np.array([s.max(0) for s in supports]).reshape(-1, 2) + tol
+    out = []
     for i in range(len(polys)):
-        for j in list(range(i + 1, len(polys))) + [-1 - k for k in range(len(supports))]:
-            other = polys[j] if j >= 0 else supports[-1 - j]
-            lo, hi = (boxes[j] if j >= 0 else (other.min(0) - tol, other.max(0) + tol))
-            if np.any(boxes[i][1] < lo) or np.any(hi < boxes[i][0]):
-                continue
-            verts = np.vstack([polys[i], other])
-            for e1 in _edges(polys[i]):
-                for e2 in _edges(other):
-                    c = _contact(e1, e2, tol, verts)
-                    if c is not None:
-                        out.append(_Contact(i, j if j >= 0 else -1, c[0], c[1], c[2]))
+        m = np.all((lo[i + 1:] <= hi[i]) & (hi[i + 1:] >= lo[i]), axis=1)
+        out += [(i, i + 1 + int(j)) for j in np.flatnonzero(m)]
+        ms = np.all((slo <= hi[i]) & (shi >= lo[i]), axis=1)
+        out += [(i, -1 - int(k)) for k in np.flatnonzero(ms)]
+    return out
+
+
+def _find_contacts(polys: list[np.ndarray], supports: list[np.ndarray], tol: float) -> list[_Contact]:
+    out: list[_Contact] = []
+    for i, j in _near_pairs(polys, supports, tol):
+        other = polys[j] if j >= 0 else supports[-1 - j]
+        verts = np.vstack([polys[i], other])
+        for e1 in _edges(polys[i]):
+            for e2 in _edges(other):
+                c = _contact(e1, e2, tol, verts)
+                if c is not None:
+                    out.append(_Contact(i, j if j >= 0 else -1, c[0], c[1], c[2]))
     return _merge_collinear(out, tol)
 
 
@@ -469,17 +479,12 @@ def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), 
     sup_pieces = [convex_pieces(s) for s in sups]
 
     # overlaps: more than a sliver of tolerance along the shorter perimeter
-    for i in range(len(polys)):
+    for i, j in _near_pairs(polys, sups, 0.0):
         per_i = float(np.linalg.norm(np.diff(np.vstack([polys[i], polys[i][:1]]), axis=0), axis=1).sum())
-        lo_i, hi_i = polys[i].min(0), polys[i].max(0)
-        for j in list(range(i + 1, len(polys))) + [-1 - k for k in range(len(sups))]:
-            other = polys[j] if j >= 0 else sups[-1 - j]
-            if np.any(hi_i < other.min(0)) or np.any(other.max(0) < lo_i):
-                continue
-            ov = overlap_area(pieces[i], pieces[j] if j >= 0 else sup_pieces[-1 - j])
-            if ov > tol * per_i:
-                what = f"block {names[j]}" if j >= 0 else f"support {-j}"
-                raise ArchdemInputError(f"blocks overlap: block {names[i]} and {what} share {ov:.3g} m^2")
+        ov = overlap_area(pieces[i], pieces[j] if j >= 0 else sup_pieces[-1 - j])
+        if ov > tol * per_i:
+            what = f"block {names[j]}" if j >= 0 else f"support {-j}"
+            raise ArchdemInputError(f"blocks overlap: block {names[i]} and {what} share {ov:.3g} m^2")
 
     depths = []
     for b in blocks:
