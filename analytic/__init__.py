@@ -16,35 +16,35 @@ from specimens.lazy import lazy_exports
 
 # public name -> its module (imported on first use)
 _EXPORTS = {
-    "FailureDomain": "analytic.domain", "failure_domain": "analytic.domain",
-    "Response": "analytic.dynamics", "simulate": "analytic.dynamics",
-    "GroundMotion": "analytic.inputs", "PulseA": "analytic.inputs", "PulseB": "analytic.inputs", "SampledMotion": "analytic.inputs", "SinePulse": "analytic.inputs",
-    "continuous_collapse": "analytic.limit_continuous",
-    "enumerate_mechanisms": "analytic.limit_discrete", "solve_lp": "analytic.limit_discrete",
-    "arch_four_bar": "analytic.linkage", "arch_two_bar": "analytic.linkage", "minimised_four_bar": "analytic.linkage", "minimised_layout": "analytic.linkage",
-    "ground_motion": "analytic.records", "read_record": "analytic.records",
-    "RockingBlock": "analytic.rocking_block",
-    "analyse": "analytic.summary",
-    "lambda_slide": "analytic.two_bar", "lambda_two_bar": "analytic.two_bar", "mu_star": "analytic.two_bar",
+    "FailureDomain": "analytic.rocking.domain", "failure_domain": "analytic.rocking.domain",
+    "Response": "analytic.rocking.dynamics", "simulate": "analytic.rocking.dynamics",
+    "GroundMotion": "analytic.motions.inputs", "PulseA": "analytic.motions.inputs", "PulseB": "analytic.motions.inputs", "SampledMotion": "analytic.motions.inputs", "SinePulse": "analytic.motions.inputs",
+    "continuous_collapse": "analytic.limit.limit_continuous",
+    "enumerate_mechanisms": "analytic.limit.limit_discrete", "solve_lp": "analytic.limit.limit_discrete",
+    "arch_four_bar": "analytic.rocking.linkage", "arch_two_bar": "analytic.rocking.linkage", "minimised_four_bar": "analytic.rocking.linkage", "minimised_layout": "analytic.rocking.linkage",
+    "ground_motion": "analytic.motions.records", "read_record": "analytic.motions.records",
+    "RockingBlock": "analytic.rocking.rocking_block",
+    "analyse": "analytic.limit.summary",
+    "lambda_slide": "analytic.limit.two_bar", "lambda_two_bar": "analytic.limit.two_bar", "mu_star": "analytic.limit.two_bar",
 }
 __all__ = list(_EXPORTS)
 
 if TYPE_CHECKING:  # the same names for type checkers and editors
-    from analytic.domain import FailureDomain, failure_domain
-    from analytic.dynamics import Response, simulate
-    from analytic.inputs import GroundMotion, PulseA, PulseB, SampledMotion, SinePulse
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-    from analytic.linkage import (
+    from analytic.limit.limit_continuous import continuous_collapse
+    from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.limit.summary import analyse
+    from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
+    from analytic.motions.inputs import GroundMotion, PulseA, PulseB, SampledMotion, SinePulse
+    from analytic.motions.records import ground_motion, read_record
+    from analytic.rocking.domain import FailureDomain, failure_domain
+    from analytic.rocking.dynamics import Response, simulate
+    from analytic.rocking.linkage import (
         arch_four_bar,
         arch_two_bar,
         minimised_four_bar,
         minimised_layout,
     )
-    from analytic.records import ground_motion, read_record
-    from analytic.rocking_block import RockingBlock
-    from analytic.summary import analyse
-    from analytic.two_bar import lambda_slide, lambda_two_bar, mu_star
+    from analytic.rocking.rocking_block import RockingBlock
 
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)

@@ -27,7 +27,7 @@ def timed_threshold(sid: str, freq: float, engine: str = "pybullet", workers: in
 
     from dem.core.model import as_model
     from dem.core.settings import Settings
-    from dem.experiments.thresholds import static_onset, threshold
+    from dem.experiments.shake.thresholds import static_onset, threshold
 
     st = Settings(engine=engine)
     model = as_model(sid, config=config)

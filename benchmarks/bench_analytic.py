@@ -11,8 +11,8 @@ import time
 
 from _common import report
 
-from analytic.limit_continuous import continuous_collapse
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.limit.limit_continuous import continuous_collapse
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, full_scale_set
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT

@@ -19,9 +19,9 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from dem.campaign.context import CampaignContext
     from dem.campaign.estimate import REFERENCE_SPEED, estimate, machine_speed
     from dem.campaign.runner import all_steps, run_campaign
+    from dem.common.campaign import CampaignContext
     from dem.core.provenance import provenance
     from specimens.catalogue import select_specimens
     from specimens.io import atomic_path

@@ -18,7 +18,7 @@ OUT = Path(__file__).resolve().parent / "results"
 def _tilt(sid: str) -> dict:
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import tilt
+    from dem.experiments.tilt.run import tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 

@@ -14,9 +14,9 @@ import time
 import numpy as np
 from _common import report
 
-from analytic.domain import failure_domain, make_input
-from analytic.dynamics import simulate
-from analytic.linkage import minimised_four_bar
+from analytic.rocking.domain import failure_domain, make_input
+from analytic.rocking.dynamics import simulate
+from analytic.rocking.linkage import minimised_four_bar
 from specimens.catalogue import get_specimen
 
 

@@ -81,7 +81,7 @@ def _step_time(engine: str, copies: int, seconds: float) -> dict:
 def _tilt_time(engine: str, sid: str) -> dict:
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.compare_engines import engine_tilt
+    from dem.experiments.compare_engines.run import engine_tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 

@@ -18,8 +18,8 @@ from _common import report
 
 
 def main() -> None:
-    from analytic.calibration import load_calibration
-    from dem.experiments.ensemble import tilt_ensemble
+    from analytic.limit.calibration import load_calibration
+    from dem.experiments.tilt.ensemble import tilt_ensemble
     from specimens.catalogue import get_specimen
     from specimens.imperfection import Imperfection
 

@@ -26,7 +26,7 @@ from _common import report
 
 
 def _study(a, n: int, path: Path, workers: int | None = None, scheduler: str | None = None):
-    from dem.experiments.fragility import DEFAULT_EDGE_LOSS_SD, Perturbation, arch_structure, fragility, sine_spec
+    from dem.experiments.fragility.run import DEFAULT_EDGE_LOSS_SD, Perturbation, arch_structure, fragility, sine_spec
     from specimens.catalogue import get_specimen
     from specimens.io import parse_grid
 
@@ -41,7 +41,7 @@ def _study(a, n: int, path: Path, workers: int | None = None, scheduler: str | N
 
 def _engine_share(a) -> dict:
     """cProfile of one run (the middle amplitude): time inside the engine's step over the run's."""
-    from dem.experiments.fragility import Perturbation, arch_structure, shake_case, sine_spec
+    from dem.experiments.fragility.run import Perturbation, arch_structure, shake_case, sine_spec
     from specimens.catalogue import get_specimen
     from specimens.io import parse_grid
 

@@ -21,7 +21,7 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def _speedup(sid: str, mus: list[float]) -> dict:
-    from dem.studies.cases import DEM_CASE, make_case
+    from dem.experiments.tilt.case import DEM_CASE, make_case
     from dem.studies.sweep import run_study
     from specimens.catalogue import get_specimen
 
@@ -43,7 +43,7 @@ def _speedup(sid: str, mus: list[float]) -> dict:
 
 
 def _map(specimens: str, mus: str, refine: int, workers: int) -> dict:
-    from dem.experiments.friction_map import catalogue_map
+    from dem.experiments.friction_map.run import catalogue_map
     from specimens.catalogue import SPECIMEN_IDS
 
     with tempfile.TemporaryDirectory() as d:
@@ -66,7 +66,7 @@ def _map(specimens: str, mus: str, refine: int, workers: int) -> dict:
 
 
 def _scale(spans: list[float], mus: list[float], sh: float, sd: float, workers: int, refine: int) -> dict:
-    from dem.experiments.friction_map import catalogue_map
+    from dem.experiments.friction_map.run import catalogue_map
     from specimens.catalogue import Specimen
     from specimens.geometry import PointedArch
 

@@ -19,10 +19,10 @@ OUT = Path(__file__).resolve().parent / "results"
 
 
 def main() -> None:
-    from analytic.inputs import SinePulse
+    from analytic.motions.inputs import SinePulse
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.experiments.shake.run import ShakeProtocol, shake
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import G

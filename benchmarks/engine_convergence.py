@@ -20,8 +20,8 @@ OUT = Path(__file__).resolve().parent / "results"
 def main() -> None:
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.compare_engines import FRICTIONS, engine_tilt
-    from dem.experiments.tilt_check import reference_lp
+    from dem.experiments.compare_engines.run import FRICTIONS, engine_tilt
+    from dem.experiments.tilt.check import reference_lp
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.io import atomic_path

@@ -39,8 +39,8 @@ import warnings
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from analytic.limit_continuous import continuous_collapse, hinge_polar_angles
-from analytic.limit_piers import continuous_on_piers
+from analytic.limit.limit_continuous import continuous_collapse, hinge_polar_angles
+from analytic.limit.limit_piers import continuous_on_piers
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 

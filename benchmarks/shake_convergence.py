@@ -22,8 +22,8 @@ from _common import report
 def main() -> None:
     from dem.core.model import as_model
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol
-    from dem.experiments.thresholds import static_onset, threshold
+    from dem.experiments.shake.run import ShakeProtocol
+    from dem.experiments.shake.thresholds import static_onset, threshold
     from specimens.catalogue import STUDY_JOINTS
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -1,7 +1,7 @@
 """Compliant joints against independent truths (docs/validation.md#16-compliant-joints):
 
 * ``vibration``: a block's vertical and rocking free vibration in both engines against the closed forms
-  of its springs (at the base's two ends) and ``analytic.modes``, and the vertical damping ratio
+  of its springs (at the base's two ends) and ``analytic.compliant.modes``, and the vertical damping ratio
   against ``beta_R omega / 2``;
 * ``tilt``: the no-sliding tilt lambda of the catalogue with the study's joints (Table 5.1; ``--beta``
   another damping) against the LP, and how lambda moves with k_n on one specimen;
@@ -26,10 +26,10 @@ BLOCK = (0.2, 0.4, 0.1, 500.0)
 
 
 def vibration(engines: list[str]) -> dict:
-    from analytic.modes import modes
+    from analytic.compliant.modes import modes
     from dem.core.model import single_block
     from dem.core.settings import Settings
-    from dem.experiments.free_vibration import free_vibration
+    from dem.experiments.modes.run import free_vibration
     from specimens.constants import G
     from specimens.frame import single_block as block_structure
 
@@ -57,12 +57,12 @@ def vibration(engines: list[str]) -> dict:
 
 
 def tilt(engines: list[str], ids: list[str], beta: float | None = None, planar: bool = False) -> dict:
-    from analytic.elastic_tilt import elastic_tilt
+    from analytic.compliant.elastic_tilt import elastic_tilt
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol
-    from dem.experiments.tilt import tilt as run_tilt
-    from dem.experiments.tilt_check import check_result
+    from dem.experiments.tilt.check import check_result
+    from dem.experiments.tilt.run import TiltProtocol
+    from dem.experiments.tilt.run import tilt as run_tilt
     from specimens.blocks import discretise
     from specimens.catalogue import STUDY_JOINTS, get_specimen
     from specimens.constants import NO_SLIDING_MU
@@ -87,9 +87,9 @@ def tilt(engines: list[str], ids: list[str], beta: float | None = None, planar: 
 
 
 def shake(ids: list[str], freqs: list[float], workers: int) -> dict:
-    from dem.campaign.step_shake import _lowest_threshold
     from dem.core.settings import Settings
-    from dem.experiments.domain import analytic_domains, dem_failure_domain
+    from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
+    from dem.experiments.shake.step_shake import _lowest_threshold
     from specimens.catalogue import STUDY_JOINTS, get_specimen
 
     rows = []

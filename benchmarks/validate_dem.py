@@ -54,12 +54,12 @@ def rest_drift(sid: str, config: str, seconds: float = 5.0, engine: str = "pybul
 
 def hinge_match(assembly, dem_hinges, lp_lam: float, tol: float = 0.005) -> tuple[bool, float]:
     """True if the DEM hinges are the LP layout, or a four-hinge mechanism within ``tol`` of lambda."""
-    from analytic.limit_discrete import enumerate_mechanisms
+    from analytic.limit.limit_discrete import enumerate_mechanisms
 
     k = enumerate_mechanisms(assembly)
     if tuple(dem_hinges) == tuple(k.hinges):
         return True, float(k.lam)
-    from analytic.limit_discrete import mechanism_lambda
+    from analytic.limit.limit_discrete import mechanism_lambda
 
     lam = mechanism_lambda(assembly, dem_hinges)
     return bool(np.isfinite(lam) and abs(lam - lp_lam) <= tol * lp_lam), lam
@@ -72,8 +72,8 @@ def one(job: tuple[str, str, bool, str, dict, dict, float]) -> dict:
     sid, config, with_drift, engine, proto_kw, settings_kw, contact = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol, tilt
-    from dem.experiments.tilt_check import check_result, reference_lp
+    from dem.experiments.tilt.check import check_result, reference_lp
+    from dem.experiments.tilt.run import TiltProtocol, tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
@@ -122,7 +122,7 @@ def sensitivity(job: tuple[str, str]) -> dict:
     sid, variant = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol, tilt
+    from dem.experiments.tilt.run import TiltProtocol, tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
     from specimens.constants import NO_SLIDING_MU

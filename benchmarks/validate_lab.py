@@ -26,7 +26,7 @@ def one(job: tuple[str, str, float]) -> dict:
     sid, engine, contact = job
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import TiltProtocol, tilt
+    from dem.experiments.tilt.run import TiltProtocol, tilt
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
 
@@ -37,8 +37,8 @@ def one(job: tuple[str, str, float]) -> dict:
 
 
 def main() -> None:
-    from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
-    from dem.experiments.ensemble import tilt_ensemble
+    from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
+    from dem.experiments.tilt.ensemble import tilt_ensemble
     from specimens.catalogue import CATALOGUE
     from specimens.imperfection import Imperfection
 

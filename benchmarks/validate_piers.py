@@ -26,10 +26,10 @@ B, H = 0.05, 0.2
 
 def tilt_job(job: tuple[str, float]) -> dict:
     engine, k = job
-    from analytic.limit_discrete import solve_lp
+    from analytic.limit.limit_discrete import solve_lp
     from dem.core.model import from_assembly
     from dem.core.settings import Settings
-    from dem.experiments.tilt import tilt
+    from dem.experiments.tilt.run import tilt
     from specimens import Piers, discretise, get_specimen
     from specimens.constants import NO_SLIDING_MU
 
@@ -46,12 +46,12 @@ def tilt_job(job: tuple[str, float]) -> dict:
 
 def frame_job(job: tuple[str, float, float]) -> dict:
     engine, beam_density, freq = job
-    from analytic.domain import domain_column
-    from analytic.inputs import SinePulse
-    from analytic.rocking_block import rocking_frame_equivalent
+    from analytic.motions.inputs import SinePulse
+    from analytic.rocking.domain import domain_column
+    from analytic.rocking.rocking_block import rocking_frame_equivalent
     from dem.core.model import frame_model
     from dem.core.settings import Settings
-    from dem.experiments.shake import ShakeProtocol, shake
+    from dem.experiments.shake.run import ShakeProtocol, shake
     from specimens.constants import NO_SLIDING_MU, G
     from specimens.frame import rocking_frame
 
@@ -71,7 +71,7 @@ def main() -> None:
     ap.add_argument("--engines", default="pybullet,mujoco")
     ap.add_argument("--workers", type=int, default=2)
     a = ap.parse_args()
-    from dem.campaign.step_piers import PIER_HEIGHTS_FULL
+    from dem.experiments.tilt.step_piers import PIER_HEIGHTS_FULL
     from specimens.processes import die_with_parent
 
     engines = a.engines.split(",")

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
@@ -87,8 +88,6 @@ def full_scale_set(
 def catalogue_rows() -> list[dict]:
     """One row per catalogue specimen, SI units (the JSON schema of ``archdem specimens``: the
     keys in ``JSON_KEYS``)."""
-    from specimens.blocks import discretise
-
     rows = []
     for s in CATALOGUE:
         a = s.arch

@@ -4,16 +4,16 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Polygon
 
 from specimens.blocks import Assembly
+from specimens.io import atomic_path
 
 
 def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensions: bool = True,
                   face_colors: list | None = None, joint_colors: dict[str, str] | None = None):
     """Draw the bodies (grey), the joints (numbered) and the main dimensions [mm] on ``ax``."""
-    from matplotlib.figure import Figure
-    from matplotlib.patches import Polygon
-
     arch = assembly.arch
     if ax is None:
         ax = Figure(figsize=(7, 5.5)).subplots()
@@ -72,8 +72,6 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
 
 def _draw_drawn(assembly, ax, title, face_colors, joint_colors):
     """A drawn assembly (no arch): bodies named at their centroids, joints numbered, the supports hatched."""
-    from matplotlib.patches import Polygon
-
     size = assembly.size * 1000
     for k, body in enumerate(assembly.bodies):
         fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if k != assembly.crown_index else "#c4a97a")
@@ -109,10 +107,6 @@ def _draw_drawn(assembly, ax, title, face_colors, joint_colors):
 
 def save_drawing(assembly: Assembly, path: str | Path, title: str | None = None) -> Path:
     """Draw ``assembly`` and save it atomically to ``path`` (format from the suffix)."""
-
-    from matplotlib.figure import Figure
-
-    from specimens.io import atomic_path
 
     path = Path(path)
     fig = Figure(figsize=(7, 5.5))

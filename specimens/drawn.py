@@ -31,6 +31,7 @@ from specimens.blocks import (
     _make_body,
     _relieved,
     central_band,
+    check_band,
     check_contact,
     joint_normal,
 )
@@ -118,8 +119,6 @@ class DrawnAssembly(Assembly):
         """The same blocks with each named joint touching within its own band (fractions of its depth from
         ``p_i``), e.g. a realisation of :class:`specimens.imperfection.Imperfection`; ``contact``: the
         nominal fraction recorded beside them."""
-        from specimens.blocks import check_band
-
         unknown = set(bands) - {j.name for j in self.joints}
         if unknown:
             raise ArchdemInputError(f"contact bands given for joints this assembly does not have: {sorted(unknown)}")

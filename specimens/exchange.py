@@ -23,8 +23,10 @@ from pathlib import Path
 import numpy as np
 
 from specimens.blocks import DEFAULT_DENSITY, Assembly
-from specimens.drawn import DrawnAssembly, DrawnBlock, assemble
+from specimens.drawn import DrawnAssembly, DrawnBlock, _merge, _point_in, _self_intersects, assemble
 from specimens.errors import ArchdemInputError
+from specimens.io import atomic_path
+from specimens.sections import polygon_properties, signed_area
 
 #: Length units a drawing may be in, and their size in metres.
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
@@ -100,9 +102,6 @@ def read_assembly(path: str | Path, units: str | None = None, depth: float | Non
 def _label_blocks(polys: list[tuple[np.ndarray, float | None]], labels: list[tuple[str, np.ndarray]],
                   pieces: list[np.ndarray]) -> list[DrawnBlock]:
     """Blocks named by the labels inside them (else ``B<k>``, k their place in the file) with the pieces inside them."""
-    from specimens.drawn import _point_in
-    from specimens.sections import polygon_properties
-
     names = [f"B{k + 1}" for k in range(len(polys))]
     for text, pt in labels:
         hit = [k for k, (o, _) in enumerate(polys) if _point_in(o, pt)]
@@ -119,6 +118,7 @@ def _label_blocks(polys: list[tuple[np.ndarray, float | None]], labels: list[tup
 
 
 def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     import ezdxf
     from ezdxf.lldxf.const import DXFError
 
@@ -341,13 +341,11 @@ def _read_mesh(path: Path, units: str | None, up: str | None) -> dict:
 
 def _ring(front: np.ndarray) -> np.ndarray:
     """A face's polygon: its vertices in the file's order when they already go round it, else their hull."""
-    from specimens.drawn import _self_intersects
-    from specimens.sections import signed_area
-
     _, first = np.unique(front, axis=0, return_index=True)
     pts = front[np.sort(first)]
     if len(pts) >= 3 and abs(signed_area(pts)) > 0 and not _self_intersects(pts, 0.0):
         return pts
+    # deferred: `archdem --help` imports this module, not scipy.spatial (docs/architecture.md#imports)
     from scipy.spatial import ConvexHull, QhullError
 
     try:
@@ -358,8 +356,6 @@ def _ring(front: np.ndarray) -> np.ndarray:
 
 def _union(pieces: list[np.ndarray], name: str, path: Path) -> np.ndarray:
     """The outline of a block given only as convex pieces sharing whole edges."""
-    from specimens.drawn import _merge
-
     pts: list[np.ndarray] = []
     rings = []
     for q in pieces:
@@ -387,13 +383,12 @@ def _union(pieces: list[np.ndarray], name: str, path: Path) -> np.ndarray:
 
 
 def _signed(q: np.ndarray) -> float:
-    from specimens.sections import signed_area
-
     return signed_area(q)
 
 
 def _obj_objects(path: Path) -> tuple[list[tuple[str, np.ndarray]], dict]:
     """(name, vertices in file order) per ``o``/``g`` object of an OBJ file, and its archdem comment."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     import trimesh
 
     try:
@@ -448,6 +443,7 @@ def _obj_objects(path: Path) -> tuple[list[tuple[str, np.ndarray]], dict]:
 
 def _stl_objects(path: Path) -> list[tuple[str, np.ndarray]]:
     """One block per connected solid of an STL file, ``B<k>`` left to right."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     import trimesh
 
     try:
@@ -456,6 +452,7 @@ def _stl_objects(path: Path) -> list[tuple[str, np.ndarray]]:
         raise ArchdemInputError(f"{path.name}: not a readable STL file ({type(exc).__name__})") from None
     if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
         raise ArchdemInputError(f"{path.name}: no triangles in the STL file")
+    # deferred: `archdem --help` imports this module, not scipy.sparse (docs/architecture.md#imports)
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -502,8 +499,6 @@ def write_assembly(asm: Assembly, path: str | Path, overwrite: bool = False) -> 
     """Write ``asm`` (metres) to ``path``: ``.dxf``, ``.csv`` or ``.obj`` (one rigid body per block;
     a non-convex body with its convex pieces); written atomically, never over an existing file
     unless ``overwrite``."""
-    from specimens.io import atomic_path
-
     p = Path(path)
     fmt = FORMATS.get(p.suffix.lower())
     if fmt not in ("dxf", "csv", "obj"):
@@ -522,6 +517,7 @@ def _own_pieces(body) -> list[np.ndarray]:
 
 
 def _write_dxf(asm, path: Path) -> None:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     import ezdxf
 
     doc = ezdxf.new(units=6)

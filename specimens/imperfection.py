@@ -36,6 +36,12 @@ class Imperfection:
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
                 raise ArchdemInputError(f"{name.replace('_', ' ')} must be a length >= 0 [m], got {v!r}")
 
+    @classmethod
+    def from_contact(cls, arch: PointedArch, contact: float, edge_loss_sd: float = 0.0) -> "Imperfection":
+        """The nominal edge loss that leaves ``arch``'s joints the contact fraction ``contact`` (the
+        inverse of :meth:`contact`), with the scatter ``edge_loss_sd`` [m]."""
+        return cls(edge_loss=(1.0 - check_contact(contact)) * arch.t / 2, edge_loss_sd=edge_loss_sd)
+
     def contact(self, arch: PointedArch) -> float:
         """The nominal effective contact of ``arch``'s joints (radial joints: depth ``t``)."""
         c = 1.0 - 2.0 * self.edge_loss / arch.t

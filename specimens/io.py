@@ -8,6 +8,7 @@ silently replaced.
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import json
 import math
 import os
@@ -117,8 +118,6 @@ def exclusive(lock_file: str | os.PathLike, what: str, remove: bool = False) -> 
     ``remove``: delete the lock file when done (for a lock beside a result file). A writer that
     locked a file already removed by the previous holder notices it and locks the new one.
     """
-    import fcntl
-
     lock_file = Path(lock_file)
     while True:
         fd = os.open(lock_file, os.O_CREAT | os.O_RDWR, 0o644)

@@ -14,6 +14,7 @@ import trimesh
 
 from specimens.blocks import Assembly, Body
 from specimens.errors import ArchdemInputError
+from specimens.io import atomic_path
 from specimens.sections import is_convex
 
 MeshFormat = Literal["stl", "obj", "glb"]
@@ -58,8 +59,6 @@ def export_meshes(assembly: Assembly, out_dir: str | Path, fmt: MeshFormat = "st
     one convex, watertight solid). ``glb``: one scene file ``assembly.glb`` with one node
     per piece named ``<body>_p<k>``.
     """
-    from specimens.io import atomic_path
-
     out = Path(out_dir)
     written: list[Path] = []
     meshes = assembly_meshes(assembly)

@@ -1,5 +1,6 @@
-"""The shape of the house: layers point down only, library code never imports the CLI, no import
-cycles, comments stay short and cite only documents of the repository (docs/architecture.md)."""
+"""The shape of the house: layers point down only, and so do the sub-packages inside ``dem``; library
+code never imports the command line; no import cycles; comments stay short and cite only documents of
+the repository (docs/architecture.md)."""
 from __future__ import annotations
 
 import ast
@@ -13,6 +14,17 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 LAYERS = ("specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
 MAX_COMMENT_BLOCK = 8  # lines; longer explanations belong in docs/
+# the floors of analytic and dem, lowest first: a module imports its own sub-package or an earlier one
+# (docs/architecture.md); the package tops, with their docstrings and public names, sit above their floors
+SUBPACKAGES = (
+    "analytic.search", "analytic.motions", "analytic.limit", "analytic.rocking", "analytic.compliant",
+    "analytic.codes", "analytic",
+    "dem.core", "dem.studies", "dem.common",
+    "dem.experiments.tilt", "dem.experiments.shake", "dem.experiments.fragility", "dem.experiments.friction_map",
+    "dem.experiments.modes", "dem.experiments.record", "dem.experiments.assessment", "dem.experiments.compare_engines",
+    "dem.campaign", "dem.cli",
+    "dem.experiments", "dem",
+)
 
 
 def _modules() -> dict[str, Path]:
@@ -98,6 +110,40 @@ def cycles(edges: dict[str, set[str]]) -> list[list[str]]:
     return out
 
 
+def subpackage_of(module: str) -> str | None:
+    """The declared sub-package ``module`` belongs to (the longest that prefixes it), or None."""
+    hits = [s for s in SUBPACKAGES if module == s or module.startswith(s + ".")]
+    return max(hits, key=len) if hits else None
+
+
+def subpackage_graph(edges: dict[str, set[str]]) -> dict[str, set[str]]:
+    """Sub-package -> the other sub-packages its modules import (modules of analytic and dem)."""
+    out: dict[str, set[str]] = {}
+    for a, targets in edges.items():
+        sa = subpackage_of(a)
+        if sa is None:
+            continue
+        out.setdefault(sa, set())
+        for b in targets:
+            sb = subpackage_of(b)
+            if sb is not None and sb != sa:
+                out[sa].add(sb)
+                out.setdefault(sb, set())
+    return out
+
+
+def later_imports(edges: dict[str, set[str]]) -> list[str]:
+    """Imports from a sub-package into an earlier one of SUBPACKAGES, as "a -> b" (module names)."""
+    rank = {s: i for i, s in enumerate(SUBPACKAGES)}
+    return sorted(f"{a} -> {b}" for a in edges for b in edges[a]
+                  if subpackage_of(a) and subpackage_of(b) and rank[subpackage_of(b)] > rank[subpackage_of(a)])
+
+
+def test_a_floor_of_analytic_importing_a_later_one_fails():
+    edges = {"analytic.limit.two_bar": {"analytic.rocking.linkage"}, "analytic.rocking.linkage": set()}
+    assert later_imports(edges) == ["analytic.limit.two_bar -> analytic.rocking.linkage"]
+
+
 def test_the_graph_sees_imports_inside_functions():
     # the campaign runner imports the report inside a function: the graph must see it
     assert "dem.campaign.report" in import_graph()["dem.campaign.runner"]
@@ -110,11 +156,51 @@ def test_layers_point_down_only():
     assert upward == []
 
 
+def is_command_line(module: str) -> bool:
+    """The command line: the program (dem.cli), the sub-command modules (``NAME_cmd``, beside their
+    experiments) and their shared options (dem.common.options)."""
+    return (module == "dem.cli" or module.startswith("dem.cli.") or module.rpartition(".")[2].endswith("_cmd")
+            or module == "dem.common.options")
+
+
 def test_library_code_never_imports_the_cli():
     edges = import_graph()
-    bad = sorted(f"{a} -> {b}" for a in edges for b in edges[a]
-                 if b.startswith("dem.cli") and not a.startswith("dem.cli"))
+    bad = sorted(f"{a} -> {b}" for a in edges for b in edges[a] if is_command_line(b) and not is_command_line(a))
     assert bad == []
+
+
+def test_every_module_of_analytic_and_dem_sits_in_a_declared_subpackage():
+    assert [m for m in import_graph() if m.startswith(("analytic", "dem")) and subpackage_of(m) is None] == []
+    assert all((ROOT / s.replace(".", "/") / "__init__.py").is_file() or (ROOT / (s.replace(".", "/") + ".py")).is_file()
+               for s in SUBPACKAGES)
+
+
+def test_subpackages_import_only_earlier_ones():
+    assert later_imports(import_graph()) == []
+
+
+def test_no_cycles_between_subpackages():
+    assert cycles(subpackage_graph(import_graph())) == []
+
+
+def test_a_planted_cycle_between_subpackages_fails():
+    """Two sub-packages importing each other (core -> campaign is the later import) and a longer loop
+    through three experiments are both found, as module edges and as sub-package cycles."""
+    edges = {
+        "dem.core.model": {"dem.campaign.runner"}, "dem.campaign.runner": {"dem.core.model"},
+        "dem.experiments.tilt.run": {"dem.experiments.shake.run"},
+        "dem.experiments.shake.run": {"dem.experiments.fragility.run"},
+        "dem.experiments.fragility.run": {"dem.experiments.tilt.case"}, "dem.experiments.tilt.case": set(),
+    }
+    assert later_imports(edges) == ["dem.core.model -> dem.campaign.runner",
+                                    "dem.experiments.shake.run -> dem.experiments.fragility.run",
+                                    "dem.experiments.tilt.run -> dem.experiments.shake.run"]
+    assert sorted(cycles(subpackage_graph(edges))) == [
+        ["dem.campaign", "dem.core"],
+        ["dem.experiments.fragility", "dem.experiments.shake", "dem.experiments.tilt"],
+    ]
+    # within a sub-package modules may import each other in any order, as long as there is no cycle
+    assert later_imports({"dem.experiments.tilt.step_tilt": {"dem.experiments.tilt.run"}}) == []
 
 
 def test_no_import_cycles():

@@ -1,2 +1,2 @@
-"""The virtual test campaign: a runner, one module per step (catalogue, analytic, tilt, map, shake,
-record), the time estimate and the HTML report."""
+"""The virtual test campaign: the runner and its list of steps (each step lives with its experiment),
+the catalogue and analytic steps, the time estimate, the HTML report and the ``campaign`` command."""

@@ -2,12 +2,22 @@
 machine's speed reading (:func:`machine_speed`) that scales them (docs/timings.md)."""
 from __future__ import annotations
 
-from dem.campaign.context import CampaignContext
-from dem.campaign.step_lab import lab_plan
-from dem.campaign.step_map import map_plan
-from dem.campaign.step_record import record_plan
-from dem.campaign.step_shake import shake_plan
-from dem.campaign.step_tilt import tilt_frictions
+import os
+import statistics
+import time
+
+from dem.common.campaign import CampaignContext
+from dem.core.engines import get_engine
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.friction_map.run import parse_mu_grid
+from dem.experiments.friction_map.step_map import map_plan
+from dem.experiments.record.step_record import record_plan
+from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.tilt.step_lab import lab_plan
+from dem.experiments.tilt.step_tilt import tilt_frictions
+from specimens.blocks import discretise
+from specimens.catalogue import get_specimen
 
 # Core-seconds of one unit of work of each simulator step (PyBullet, 15 bodies, the defaults) on a
 # machine whose machine_speed reads REFERENCE_SPEED, from timed campaign runs (docs/timings.md#4-unit-costs)
@@ -34,14 +44,6 @@ def machine_speed(engine: str = "pybullet", steps: int = 200, repeats: int = 3) 
     """Wall seconds per simulated second of this machine for ``engine``: the glued
     CALIBRATION_SPECIMEN at rest with the default settings, the median of ``repeats`` runs of
     ``steps`` steps after the build (about 1.5 s of wall time with PyBullet on a 2-core machine)."""
-    import statistics
-    import time
-
-    from dem.core.engines import get_engine
-    from dem.core.model import from_assembly
-    from dem.core.settings import Settings
-    from specimens.blocks import discretise
-    from specimens.catalogue import get_specimen
 
     settings = Settings(engine=engine)
     model = from_assembly(discretise(get_specimen(CALIBRATION_SPECIMEN).arch, config="glued"),
@@ -62,9 +64,6 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     estimated wall time [s] on ``ctx.workers`` cores (all cores by default). ``speed``: this
     machine's :func:`machine_speed` for ``ctx.engine``; the unit costs are scaled by it over
     REFERENCE_SPEED (None: the reference machine's costs as they are)."""
-    import os
-
-    from dem.experiments.friction_map import parse_mu_grid
 
     cores = max(1, ctx.workers or os.cpu_count() or 1)
     map_specs, mus, refine = map_plan(ctx)

@@ -15,6 +15,9 @@ import html
 import json
 from pathlib import Path
 
+import h5py
+import numpy as np
+
 from specimens.io import atomic_path, to_json
 
 _CSS = """
@@ -103,9 +106,6 @@ def build_report(out: Path, manifest: dict, step_titles: dict[str, str]) -> dict
 
 
 def _write_h5(path: Path, manifest: dict, tables: dict[str, list[dict]]) -> None:
-    import h5py
-    import numpy as np
-
     with atomic_path(path, overwrite=True) as tmp:
         with h5py.File(tmp, "w") as f:
             f.attrs["parameters"] = json.dumps(manifest.get("parameters", {}))

@@ -13,19 +13,22 @@ import time
 from pathlib import Path
 from typing import Callable
 
-from dem.campaign.context import CampaignContext, write_json_atomic
+from dem.campaign.report import build_report
 from dem.campaign.step_analytic import step_analytic
-from dem.campaign.step_assess import step_assess
 from dem.campaign.step_catalogue import step_catalogue
-from dem.campaign.step_fragility import step_fragility
-from dem.campaign.step_lab import step_lab
-from dem.campaign.step_map import step_map
-from dem.campaign.step_modes import step_modes
-from dem.campaign.step_piers import step_piers
-from dem.campaign.step_record import step_record
-from dem.campaign.step_shake import step_shake
-from dem.campaign.step_tilt import step_tilt
+from dem.common.campaign import CampaignContext, write_json_atomic
+from dem.core.provenance import provenance
+from dem.experiments.assessment.step_assess import step_assess
+from dem.experiments.fragility.step_fragility import step_fragility
+from dem.experiments.friction_map.step_map import step_map
+from dem.experiments.modes.step_modes import step_modes
+from dem.experiments.record.step_record import step_record
+from dem.experiments.shake.step_shake import step_shake
+from dem.experiments.tilt.step_lab import step_lab
+from dem.experiments.tilt.step_piers import step_piers
+from dem.experiments.tilt.step_tilt import step_tilt
 from specimens.errors import ArchdemInputError
+from specimens.io import exclusive
 
 StepFunc = Callable[[CampaignContext, Path], dict]
 
@@ -61,8 +64,6 @@ def default_steps() -> list[str]:
 def run_campaign(ctx: CampaignContext, steps: list[str] | None = None) -> dict:
     """Run (or resume) the campaign; return the manifest. One process at a time per folder: a
     second one is refused (``OUT/.archdem.lock``)."""
-    from specimens.io import exclusive
-
     ctx.out.mkdir(parents=True, exist_ok=True)
     with exclusive(ctx.out / LOCK_FILE, f"the campaign folder {ctx.out}"):
         return _run_campaign(ctx, steps)
@@ -88,7 +89,6 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
         raise ArchdemInputError(
             f"{out} holds a campaign with other parameters ({manifest.get('parameters')}); choose another --out"
         )
-    from dem.core.provenance import provenance
 
     manifest.setdefault("parameters", params)
     manifest.setdefault("steps", {})
@@ -117,7 +117,6 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
         manifest["steps"][name] = {"outputs": outputs, "wall_s": wall}
         write_json_atomic(manifest_path, manifest)
         ctx.log(f"[{name}] done in {wall:.1f} s")
-    from dem.campaign.report import build_report
 
     # the report's own entry is left out, so a resumed campaign writes the same campaign.h5
     rep = build_report(out, {k: v for k, v in manifest.items() if k != "report"}, {k: v[1] for k, v in STEPS.items()})

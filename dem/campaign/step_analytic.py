@@ -3,20 +3,20 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from dem.campaign.context import CampaignContext, pct, write_csv
+import numpy as np
+
+from analytic.limit.figures import catalogue_figures
+from analytic.limit.limit_continuous import continuous_collapse
+from analytic.limit.limit_discrete import enumerate_mechanisms
+from analytic.limit.summary import analyse, multiplier_series
+from dem.common.campaign import CampaignContext, pct, write_csv
+from specimens.blocks import discretise
+from specimens.catalogue import CATALOGUE
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
 
 def step_analytic(ctx: CampaignContext, d: Path) -> dict:
     """Limit analysis of every specimen: continuous, 80 % thickness, discrete, LP, two-bar."""
-    import numpy as np
-
-    from analytic.figures_limit import catalogue_figures
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_discrete import enumerate_mechanisms
-    from analytic.summary import analyse, multiplier_series
-    from specimens.blocks import discretise
-    from specimens.catalogue import CATALOGUE
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     # the figures' series of the whole catalogue also gives the 80 % thickness multipliers
     series = multiplier_series(CATALOGUE)

@@ -4,16 +4,15 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from dem.campaign.context import CampaignContext, write_csv
+from dem.common.campaign import CampaignContext, write_csv
+from specimens.blocks import discretise
+from specimens.catalogue import JSON_KEYS, catalogue_rows
+from specimens.drawing import save_drawing
+from specimens.mesh import export_meshes
 
 
 def step_catalogue(ctx: CampaignContext, d: Path) -> dict:
     """Catalogue table (CSV, JSON), a drawing and the meshes of every specimen."""
-    from specimens.blocks import discretise
-    from specimens.catalogue import JSON_KEYS, catalogue_rows
-    from specimens.drawing import save_drawing
-    from specimens.mesh import export_meshes
-
     ids = {s.id for s in ctx.specimens}
     rows = [r for r in catalogue_rows() if r["id"] in ids]
     write_csv(d / "catalogue.csv", rows)

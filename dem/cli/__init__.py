@@ -1,7 +1,7 @@
 """The ``archdem`` command-line program.
 
-Each sub-command lives in its own module of this package and exposes
-``register(subparsers)``; the module adds its parser and sets ``func`` (a
+Each sub-command lives in a module named after it, beside its experiment (``dem/experiments/NAME/``)
+or here for the commands that are no experiment, and exposes ``register(subparsers)``; the module adds its parser and sets ``func`` (a
 callable taking the parsed namespace and returning an exit code).
 Bad input raises :class:`specimens.errors.ArchdemInputError`, which becomes one
 line on stderr and exit code 2.
@@ -9,26 +9,44 @@ line on stderr and exit code 2.
 from __future__ import annotations
 
 import argparse
-import importlib
+import os
+import select
 import sys
+from importlib.metadata import version
 
+from dem.campaign import campaign_cmd
+from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
+from dem.experiments.assessment import assess_cmd
+from dem.experiments.compare_engines import compare_engines_cmd
+from dem.experiments.fragility import fragility_cmd
+from dem.experiments.friction_map import map_cmd
+from dem.experiments.modes import modes_cmd
+from dem.experiments.record import record_cmd
+from dem.experiments.shake import animate_cmd, domain_cmd, shake_cmd, threshold_cmd
+from dem.experiments.tilt import calibrate_cmd, tilt_cmd
 from specimens.errors import ArchdemInputError
 
-# Sub-command modules, in the order they appear in ``archdem --help``.
+# The sub-command modules, in the order they appear in ``archdem --help``; each lives with its
+# experiment (docs/architecture.md).
 _COMMANDS = [
-    "specimens_cmd",
-    "analytic_cmd",
-    "assess_cmd",
-    "calibrate_cmd",
-    "campaign_cmd",
-    "tilt_cmd",
-    "map_cmd",
-    "record_cmd",
-    "dynamics_cmd",
-    "shake_cmd",
-    "compare_cmd",
-    "fragility_cmd",
-    "modes_cmd",
+    specimens_cmd,
+    mesh_cmd,
+    draw_cmd,
+    analytic_cmd,
+    assess_cmd,
+    calibrate_cmd,
+    campaign_cmd,
+    tilt_cmd,
+    map_cmd,
+    record_cmd,
+    domain_cmd,
+    rock_cmd,
+    shake_cmd,
+    threshold_cmd,
+    animate_cmd,
+    compare_engines_cmd,
+    fragility_cmd,
+    modes_cmd,
 ]
 
 
@@ -41,12 +59,11 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="archdem", description=__doc__.splitlines()[0])
-    from importlib.metadata import version
 
     parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    for name in _COMMANDS:
-        importlib.import_module(f"dem.cli.{name}").register(sub)
+    for command in _COMMANDS:
+        command.register(sub)
     return parser
 
 
@@ -68,16 +85,12 @@ def main(argv: list[str] | None = None) -> int:
         if not _stdout_gone():
             raise  # a pipe of our own (e.g. to a worker) broke: that is a failure, not a closed reader
         # the reader of our output went away (e.g. | head): no traceback, and none at exit either
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
 
 
 def _stdout_gone() -> bool:
     """Whether standard output is a pipe whose reader has closed it."""
-    import select
-
     try:
         poller = select.poll()
         poller.register(sys.stdout.fileno(), select.POLLOUT)

@@ -4,8 +4,8 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.summary import analyse
-from dem.cli.common import (
+from analytic.limit.summary import analyse
+from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
     default_of,
@@ -13,13 +13,12 @@ from dem.cli.common import (
     print_json,
     writable_dir,
 )
+from specimens.blocks import discretise
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
 
 
 def register(sub) -> None:
-    from specimens.blocks import discretise
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-
     p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar",
                        description=__doc__.splitlines()[0])
     add_arch_arguments(p)
@@ -48,10 +47,9 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
-    from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-
     if args.plot is not None:
-        from analytic.figures_limit import catalogue_figures
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+        from analytic.limit.figures import catalogue_figures
 
         out = writable_dir(args.plot)
         files = catalogue_figures(out)

@@ -1,17 +1,9 @@
-"""``archdem specimens``, ``archdem mesh`` and ``archdem draw``."""
+"""``archdem specimens``: the table of the specimen catalogue."""
 from __future__ import annotations
 
 import argparse
 
-from dem.cli.common import (
-    add_arch_arguments,
-    arch_from_args,
-    default_of,
-    discretisation_kwargs,
-    figure_file,
-    print_json,
-    writable_dir,
-)
+from dem.common.options import print_json
 from specimens.catalogue import JSON_KEYS, catalogue_rows
 
 
@@ -30,54 +22,7 @@ def _specimens(args: argparse.Namespace) -> int:
     return 0
 
 
-def _assembly(args: argparse.Namespace):
-    from specimens.blocks import discretise
-
-    label, arch = arch_from_args(args)
-    kw = discretisation_kwargs(args, arch)
-    asm = discretise(arch, config=args.config, shape=getattr(args, "shape", default_of(discretise, "shape")), **kw)
-    return label, asm
-
-
-def _mesh(args: argparse.Namespace) -> int:
-    from specimens.mesh import export_meshes
-
-    label, asm = _assembly(args)
-    out = writable_dir(args.out)
-    files = export_meshes(asm, out, args.format)
-    print(f"{label}: {len(files)} file(s) for {asm.n_bodies} bodies written to {out}")
-    return 0
-
-
-def _draw(args: argparse.Namespace) -> int:
-    from specimens.drawing import save_drawing
-
-    label, asm = _assembly(args)
-    out = figure_file(args.out, "--out")
-    a = asm.arch
-    save_drawing(asm, out, title=f"{label}   Sh = {a.Sh:.2f}, Sd = {a.Sd:.2f}" if a is not None else label)
-    print(f"drawing written to {out}")
-    return 0
-
-
 def register(sub) -> None:
-    from specimens.blocks import discretise
-
     p = sub.add_parser("specimens", help="table of the specimen catalogue")
     p.add_argument("--json", action="store_true", help="print a JSON list")
     p.set_defaults(func=_specimens)
-
-    p = sub.add_parser("mesh", help="export voussoir meshes (convex pieces) of an arch")
-    add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
-    p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
-    p.add_argument("--format", choices=("stl", "obj", "glb"), default="stl")
-    p.add_argument("--out", required=True, help="output directory")
-    p.set_defaults(func=_mesh)
-
-    p = sub.add_parser("draw", help="engineering drawing of an arch")
-    add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
-    p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
-    p.add_argument("--out", required=True, help="output image (.png/.pdf/.svg)")
-    p.set_defaults(func=_draw)

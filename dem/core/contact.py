@@ -15,6 +15,8 @@ import numpy as np
 
 from dem.core.model import Model
 from dem.core.settings import Settings
+from specimens.catalogue import STUDY_JOINTS
+from specimens.errors import ArchdemInputError
 
 #: Contact points of a flat face-to-face joint in both engines: the four corners of the face.
 POINTS_PER_JOINT = 4
@@ -74,9 +76,6 @@ def normal_stiffness(settings: Settings, model: Model) -> float:
 def study_joints(specimen_id: str) -> dict:
     """The contact-law settings of the reference study's joints of a catalogue specimen (its Table 5.1:
     ``k_n`` and ``beta_R`` as printed)."""
-    from specimens.catalogue import STUDY_JOINTS
-    from specimens.errors import ArchdemInputError
-
     if specimen_id not in STUDY_JOINTS:
         raise ArchdemInputError(f"--joints table-5.1 has the joints of the catalogue specimens only, not {specimen_id!r}")
     kn, _, beta = STUDY_JOINTS[specimen_id]

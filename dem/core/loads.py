@@ -4,7 +4,7 @@
   ``g (sin theta, -cos theta, 0)`` with ``lambda = tan theta`` (docs/physics/dem.md#3-loads); the horizontal
   component points to +x;
 * a level reached by a smooth ramp (``ramp``) or a linear one in ``lambda`` (``linear``);
-* a horizontal ground acceleration ``a_g(t)`` (:class:`analytic.inputs.GroundMotion`), applied
+* a horizontal ground acceleration ``a_g(t)`` (:class:`analytic.motions.inputs.GroundMotion`), applied
   as a uniform inertial field in the table frame: the base is fixed and the bodies feel
   ``(-a_g(t), -g, 0)`` (d'Alembert). A ground acceleration to +x throws the arch to -x.
   With ``driven_base=True`` the same motion is applied the laboratory way instead: gravity
@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from analytic.inputs import GroundMotion
+from analytic.motions.inputs import GroundMotion
 from specimens.constants import G
 
 

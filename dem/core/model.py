@@ -19,7 +19,10 @@ from typing import Any
 
 import numpy as np
 
+from specimens.blocks import Assembly, discretise
+from specimens.catalogue import Specimen, get_specimen
 from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
 
 
 @dataclass(frozen=True)
@@ -169,10 +172,6 @@ def as_model(target: Any, config: str = "glued", name: str | None = None, **disc
     a :class:`specimens.geometry.PointedArch` (cut by :func:`specimens.blocks.discretise` with ``config``
     and ``discretise_kw``), an :class:`specimens.blocks.Assembly`, or a :class:`Model` (returned as is).
     ``name`` defaults to the specimen id, or ``"arch"``."""
-    from specimens.blocks import Assembly, discretise
-    from specimens.catalogue import Specimen, get_specimen
-    from specimens.geometry import PointedArch
-
     if isinstance(target, Model):
         return target
     if isinstance(target, str):
@@ -192,6 +191,7 @@ def single_block(b: float, h: float, width: float = 0.1, density: float = 500.0)
 
     Its base joint ``B0`` runs from the left corner (``p_i``) to the right corner (``p_e``).
     """
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from specimens.frame import single_block as block
 
     for nm, v in (("block base b", b), ("block height h", h), ("block width", width), ("density", density)):

@@ -5,6 +5,8 @@ import platform
 import sys
 from importlib.metadata import PackageNotFoundError, version
 
+from dem.core.engines import get_engine
+
 
 def package_version(name: str) -> str:
     try:
@@ -42,8 +44,6 @@ def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
 
 def run_provenance(engine: str) -> dict:
     """:func:`provenance` plus the engine's own description (name, version, engine options)."""
-    from dem.core.engines import get_engine
-
     eng = get_engine(engine)
     try:
         return {**provenance(), **eng.versions()}

@@ -38,6 +38,7 @@ class History:
     fpower: np.ndarray
 
     def rotations(self) -> np.ndarray:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from scipy.spatial.transform import Rotation
 
         nt, n = self.quat.shape[:2]
@@ -113,6 +114,7 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     relative motion matches the inertial field step for step) under plain gravity; poses and
     velocities are then recorded in the table frame, as with the inertial field.
     """
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.spatial.transform import Rotation
 
     if not (duration > 0 and math.isfinite(duration)):

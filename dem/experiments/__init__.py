@@ -1,2 +1,2 @@
-"""Virtual experiments built on ``simulate``: the tilt test, shake-table runs, shake thresholds and
-DEM failure domains, the friction map, and the engine comparison."""
+"""The virtual experiments, one package each: everything one experiment is (its run, result type,
+study case, file, figure, commands and campaign steps) in one folder (docs/architecture.md)."""

@@ -1,2 +1,1 @@
-"""Studies: the sweep engine (cases on all cores or a Dask cluster, one HDF5 study file, resume)
-and the case functions it runs."""
+"""Studies: the sweep engine (cases on all cores or a Dask cluster, one HDF5 study file, resume)."""

@@ -2,7 +2,7 @@
 
 They live in the installed package (not in ``tests/``) so that every worker process —
 a local process pool started with ``spawn`` or a Dask worker — imports them by the name
-``dem.studies.selftest_cases:evaluate`` whatever its working directory or ``sys.path``.
+``dem.studies.selftest_cases.evaluate`` by reference whatever their working directory or ``sys.path``.
 
 ``evaluate(case)`` needs ``case["x"]`` (a number) and understands optional test hooks:
 

@@ -1,10 +1,11 @@
 """Sweep engine: run a study (a list of independent cases) on local cores or a Dask cluster.
 
 A **study** is a list of cases — JSON-serialisable dicts of parameters — and a **case
-function** named by an importable ``"module:function"`` string (so that it reaches worker
-processes and Dask workers by name, not by pickling code). The function takes the case
-dict and returns a dict of results: numbers, booleans, strings, ``None``, numpy arrays or
-lists, and nested dicts of those.
+function**, imported by its caller: a module-level function, so that it reaches worker
+processes and Dask workers by reference (its module and name), not by pickling code; the study
+file records it as ``"module:function"``. The function takes the case dict and returns a dict
+of results: numbers, booleans, strings, ``None``, numpy arrays or lists, and nested dicts of
+those.
 
 Execution (:func:`run_study`): a local ``ProcessPoolExecutor`` (``spawn`` start method, all
 cores by default) or, with ``scheduler="tcp://HOST:PORT"``, a ``dask.distributed.Client``;
@@ -49,22 +50,31 @@ from __future__ import annotations
 import contextlib
 import datetime as _dt
 import hashlib
-import importlib
 import json
 import math
+import multiprocessing
 import os
 import socket
 import sys
 import time
 import traceback
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import as_completed as pool_as_completed
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterator, Sequence
+from typing import Any, Callable, Iterator, Sequence
+from urllib.parse import urlsplit
 
+import h5py
 import numpy as np
+from tqdm import tqdm
 
+from dem.core.extras import require
+from dem.core.provenance import provenance
 from specimens.errors import ArchdemInputError
-from specimens.io import exclusive, json_default, writable_dir
+from specimens.io import atomic_path, exclusive, json_default, writable_dir
+from specimens.processes import die_with_parent, pool_worker_init
 
 LAYOUT_VERSION = 1
 
@@ -89,26 +99,21 @@ def case_key(case: dict) -> str:
     return hashlib.sha256(canonical_json(case).encode()).hexdigest()[:16]
 
 
-def resolve_function(spec: str):
-    """The callable named by ``"module:function"``."""
-    if not isinstance(spec, str) or spec.count(":") != 1:
-        raise ArchdemInputError(f"case function must be given as 'module:function', got {spec!r}")
-    mod, name = spec.split(":")
-    try:
-        fn = getattr(importlib.import_module(mod), name)
-    except (ImportError, AttributeError) as exc:
-        raise ArchdemInputError(f"cannot import case function {spec!r}: {exc}") from None
-    if not callable(fn):
-        raise ArchdemInputError(f"case function {spec!r} is not callable")
-    return fn
+def function_name(func: Callable[[dict], dict]) -> str:
+    """``"module:function"`` of a case function, as the study file records it; a function that
+    worker processes cannot import by that name (a lambda, a nested function) is refused."""
+    mod, name = getattr(func, "__module__", None), getattr(func, "__qualname__", "")
+    if not callable(func) or not mod or "." in name or "<" in name or getattr(sys.modules.get(mod), name, None) is not func:
+        raise ArchdemInputError(f"a case function must be a module-level function, got {func!r}")
+    return f"{mod}:{name}"
 
 
-def _run_case(func: str, case: dict) -> dict:
+def _run_case(func: Callable[[dict], dict], case: dict) -> dict:
     """Worker side: run one case, catching its exceptions (not KeyboardInterrupt/SystemExit)."""
     t0 = time.perf_counter()
     worker = f"{socket.gethostname()}:{os.getpid()}"
     try:
-        results = resolve_function(func)(case)
+        results = func(case)
         if not isinstance(results, dict):
             raise TypeError(f"case function returned {type(results).__name__}, not a dict")
         return {"status": "ok", "results": results, "error": "", "wall": time.perf_counter() - t0, "worker": worker}
@@ -168,8 +173,6 @@ class StudyResult:
 
 # ----------------------------------------------------------------------------- HDF5 values
 def _write_value(g, name: str, value: Any) -> None:
-    import h5py
-
     if isinstance(value, dict):
         sub = g.create_group(name)
         sub.attrs["kind"] = "dict"
@@ -224,15 +227,11 @@ def _now() -> str:
 
 
 def _versions() -> dict:
-    from dem.core.provenance import provenance
-
     return provenance(extra=("dask", "distributed", "tqdm"))
 
 
 def _write_case(path: Path, key: str, case: dict, out: dict) -> CaseRecord:
     """Store one finished case (replacing an earlier failed entry) and close the file."""
-    import h5py
-
     rec = CaseRecord(key, case, out["status"], out["results"], out["error"], float(out["wall"]),
                      out.get("worker", ""), _now())
     with h5py.File(path, "a") as f:
@@ -274,8 +273,6 @@ def _read_attrs(f) -> dict:
 
 def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> StudyResult:
     """Records stored in a study file (all of them, or those of ``cases`` in that order)."""
-    import h5py
-
     path = Path(path)
     try:
         f = h5py.File(path, "r")
@@ -304,11 +301,8 @@ def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> 
     return StudyResult(path, attrs, records)
 
 
-def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
+def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool) -> set[str]:
     """Create the study file, or check it for resuming; return the keys stored with status ok."""
-    import h5py
-
-    from specimens.io import atomic_path
 
     params_json, seed_json = canonical_json(study_attrs), canonical_json(seed)
     if path.exists():
@@ -323,7 +317,7 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
         except OSError as exc:
             reason = str(exc).split("(")[0].strip() or type(exc).__name__  # HDF5's details span several lines
             raise ArchdemInputError(f"{path}: not a readable HDF5 study file ({reason})") from None
-        for what, old, new in (("case function", have[0], func), ("study parameters", have[1], params_json),
+        for what, old, new in (("case function", have[0], func_name), ("study parameters", have[1], params_json),
                                ("seed", have[2], seed_json)):
             if old != new:
                 raise ArchdemInputError(f"{path} holds a study with another {what} ({old} vs {new}); not resuming it")
@@ -331,7 +325,7 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
     with atomic_path(path) as tmp:
         with h5py.File(tmp, "w") as f:
             f.attrs["archdem_study"] = LAYOUT_VERSION
-            f.attrs["case_function"] = func
+            f.attrs["case_function"] = func_name
             f.attrs["study_attrs"] = params_json
             f.attrs["seed"] = seed_json
             f.attrs["versions"] = canonical_json(_versions())
@@ -343,10 +337,6 @@ def _open_study(path: Path, func: str, study_attrs: dict, seed: int | None, resu
 # ----------------------------------------------------------------------------- executors
 class _LocalPool:
     def __init__(self, workers: int):
-        import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
-
-        from specimens.processes import pool_worker_init
 
         self.ex = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
                                       initializer=pool_worker_init)
@@ -355,9 +345,7 @@ class _LocalPool:
         return self.ex.submit(fn, *args)
 
     def as_completed(self, futures):
-        from concurrent.futures import as_completed
-
-        return as_completed(futures)
+        return pool_as_completed(futures)
 
     def close(self, cancel: bool) -> None:
         if cancel:
@@ -380,10 +368,6 @@ SCHEDULER_CONNECT_TIMEOUT = 3.0
 def check_scheduler(address: str, timeout: float = SCHEDULER_CONNECT_TIMEOUT) -> None:
     """Refuse, in one line, a scheduler address that is not ``tcp://HOST:PORT`` or where nothing
     accepts a connection within ``timeout`` [s] (Dask's own client would retry for its full timeout)."""
-    import socket
-    from urllib.parse import urlsplit
-
-    from dem.core.extras import require
 
     require("distributed", "a Dask scheduler (--scheduler)")  # a missing extra is named first
     try:
@@ -401,8 +385,6 @@ def check_scheduler(address: str, timeout: float = SCHEDULER_CONNECT_TIMEOUT) ->
 
 class _DaskPool:
     def __init__(self, address: str):
-        from dem.core.extras import require
-
         Client = require("distributed", "a Dask scheduler (--scheduler)").Client
 
         try:
@@ -414,6 +396,7 @@ class _DaskPool:
         return self.client.submit(fn, *args, pure=False)
 
     def as_completed(self, futures):
+        # deferred: an optional extra (docs/architecture.md#imports)
         from distributed import as_completed
 
         return as_completed(futures)
@@ -435,9 +418,6 @@ def executor(workers: int, scheduler: str | None = None) -> Iterator[tuple[Any, 
         finally:
             pool.close(True)
         return
-    from concurrent.futures import ProcessPoolExecutor
-
-    from specimens.processes import die_with_parent
 
     with ProcessPoolExecutor(max_workers=workers, initializer=die_with_parent) as ex:
         yield ex, workers
@@ -455,7 +435,7 @@ def _crash_error(exc: BaseException) -> str | None:
 
 
 # ----------------------------------------------------------------------------- run
-def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, workers: int | None = None,
+def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str | os.PathLike, workers: int | None = None,
               scheduler: str | None = None, resume: bool = False, progress: bool = True,
               study_attrs: dict | None = None, seed: int | None = None) -> StudyResult:
     """Run every case of a study and store each result in ``out_path`` as it finishes.
@@ -472,7 +452,7 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
     path = Path(out_path)
     cases = list(cases)
     study_attrs = dict(study_attrs or {})
-    resolve_function(func)  # fail early, in the main process, on a bad name
+    func_name = function_name(func)  # fail early, in the main process
     keys = [case_key(c) for c in cases]
     if len(set(keys)) != len(keys):
         dup = next(c for c, k in zip(cases, keys) if keys.count(k) > 1)
@@ -485,7 +465,7 @@ def run_study(cases: Sequence[dict], func: str, out_path: str | os.PathLike, wor
         raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
     writable_dir(path.parent)
     with exclusive(lock_path(path), f"the study file {path}", remove=True):
-        done = _open_study(path, func, study_attrs, seed, resume)
+        done = _open_study(path, func_name, study_attrs, seed, resume)
         todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
         if todo:
             _execute(todo, func, path, workers, scheduler, progress)
@@ -499,9 +479,6 @@ def lock_path(study: str | os.PathLike) -> Path:
 
 
 def _execute(todo, func, path, workers, scheduler, progress) -> None:
-    from concurrent.futures.process import BrokenProcessPool
-
-    from tqdm import tqdm
 
     pool = _DaskPool(scheduler) if scheduler else _LocalPool(min(int(workers or os.cpu_count() or 1), len(todo)))
     bar = tqdm(total=len(todo), desc="cases", unit="case", file=sys.stderr, dynamic_ncols=True,

@@ -9,9 +9,9 @@ import math
 import numpy as np
 import pytest
 
-from analytic.limit_continuous import continuous_collapse, effective_arch, lambda_of_hinges
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from analytic.linkage import minimised_four_bar
+from analytic.limit.limit_continuous import continuous_collapse, effective_arch, lambda_of_hinges
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.rocking.linkage import minimised_four_bar
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.errors import ArchdemInputError

@@ -3,11 +3,11 @@ import math
 
 import pytest
 
-from analytic.domain import domain_column
-from analytic.impact import energy_restitution
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from analytic.linkage import mechanism_four_bar
-from analytic.rocking_block import rocking_frame_equivalent
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.rocking.domain import domain_column
+from analytic.rocking.impact import energy_restitution
+from analytic.rocking.linkage import mechanism_four_bar
+from analytic.rocking.rocking_block import rocking_frame_equivalent
 from specimens import Piers, discretise, get_specimen
 from specimens.constants import G
 from specimens.frame import rocking_frame
@@ -93,8 +93,8 @@ def test_hinges_anywhere_on_piers():
     """The fine LP finds the continuous ring's own multiplier on short stout piers, and on tall piers
     a multiplier below the voussoirs' with the last hinge at the pier's foot; halving the cut moves it
     by less than 0.1 %."""
-    from analytic.limit_continuous import continuous_collapse
-    from analytic.limit_piers import continuous_on_piers
+    from analytic.limit.limit_continuous import continuous_collapse
+    from analytic.limit.limit_piers import continuous_on_piers
 
     short = continuous_on_piers(ARCH, Piers(0.1, 3 * ARCH.t, courses=2))
     assert short.lam == pytest.approx(continuous_collapse(ARCH).lam, rel=1e-4)

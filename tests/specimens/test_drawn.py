@@ -1,12 +1,15 @@
 """Assemblies from drawn polygons: joints from the geometry, order and orientation, and bad drawings."""
+import json
 import math
 
 import numpy as np
 import pytest
 
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 from specimens import ArchdemInputError, discretise
-from specimens.drawn import DrawnBlock, assemble, convex_pieces
+from specimens.drawn import DrawnBlock, assemble, convex_pieces, from_dict
+from specimens.exchange import EXAMPLE_DRAWING, read_assembly
+from specimens.imperfection import Imperfection, realise_drawn
 from specimens.sections import is_convex, polygon_properties, signed_area
 
 
@@ -111,11 +114,6 @@ def test_bad_drawings_are_refused_in_one_line(blocks, supports, message):
 
 
 def test_a_drawn_assembly_described_and_rebuilt_is_the_same_to_the_bit():
-    import json
-
-    from specimens.drawn import from_dict
-    from specimens.exchange import EXAMPLE_DRAWING, read_assembly
-
     asm = read_assembly(EXAMPLE_DRAWING)
     back = from_dict(json.loads(json.dumps(asm.to_dict())))
     for x, y in zip(asm.bodies, back.bodies):
@@ -129,9 +127,6 @@ def test_a_drawn_assembly_described_and_rebuilt_is_the_same_to_the_bit():
 
 
 def test_an_imperfect_realisation_of_a_drawing_loses_its_edges_joint_by_joint():
-    from specimens.exchange import EXAMPLE_DRAWING, read_assembly
-    from specimens.imperfection import Imperfection, realise_drawn
-
     asm = read_assembly(EXAMPLE_DRAWING)
     assert realise_drawn(asm, Imperfection(0.0, 1e-3), None) is asm
     nominal = realise_drawn(asm, Imperfection(5e-3, 1e-3), None)  # 5 mm off each edge of every joint

@@ -4,13 +4,15 @@ import math
 import ezdxf
 import numpy as np
 import pytest
+import trimesh
 
-from analytic.impact import energy_restitution
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from analytic.linkage import mechanism_four_bar
-from analytic.rocking_block import rocking_frame_equivalent
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.rocking.impact import energy_restitution
+from analytic.rocking.linkage import mechanism_four_bar
+from analytic.rocking.rocking_block import rocking_frame_equivalent
 from specimens import ArchdemInputError, Piers, discretise, get_specimen
 from specimens.exchange import read_assembly, write_assembly
+from specimens.mesh import prism
 
 ARCH = get_specimen("Sh06-Sd015").arch
 
@@ -121,10 +123,6 @@ def test_a_csv_in_mm_and_an_stl_of_the_same_blocks(tmp_path):
     (tmp_path / "w.csv").write_text("block,x,z\nA,0,0\nA,200,0\nA,200,400\nA,0,400\nB,0,400\nB,200,400\nB,200,800\nB,0,800\n")
     asm = read_assembly(tmp_path / "w.csv", units="mm", depth=0.1)
     assert asm.total_mass == pytest.approx(500 * 0.1 * 0.16) and solve_lp(asm, math.inf, math.inf).lam == pytest.approx(0.25)
-    import trimesh
-
-    from specimens.mesh import prism
-
     scene = trimesh.util.concatenate([prism(b.outline, 0.1) for b in asm.bodies])
     scene.export(tmp_path / "w.stl")
     stl = read_assembly(tmp_path / "w.stl")  # float32 vertices: the same blocks to single precision

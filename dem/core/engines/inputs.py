@@ -63,6 +63,7 @@ def principal_frame(inertia: np.ndarray) -> tuple[np.ndarray, np.ndarray, tuple[
             v[:, k] = -v[:, k]
     if np.linalg.det(v) < 0:
         v[:, 2] = -v[:, 2]
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from scipy.spatial.transform import Rotation
 
     q = [float(c) for c in on_grid(Rotation.from_matrix(v).as_quat(), QUAT_GRID)]

@@ -33,7 +33,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from dem.core.contact import hull_offset
+from dem.core.contact import (
+    highest_frequency,
+    hull_offset,
+    joint_width,
+    normal_stiffness,
+    point_stiffness,
+    rayleigh_beta,
+)
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
@@ -94,7 +101,6 @@ def largest_step(model: Model, settings: Settings, options: MuJoCoOptions) -> fl
     costs many steps: at the study's joints, beta_R omega_max ~ 30)."""
     if settings.contact_law != "compliant":
         return options.max_dt
-    from dem.core.contact import highest_frequency, normal_stiffness, rayleigh_beta
 
     w = highest_frequency(model, normal_stiffness(settings, model))
     return min(options.max_dt, 1.0 / w, 1.0 / max(rayleigh_beta(settings, model) * w * w, 1e-30))
@@ -181,8 +187,6 @@ class _Corner:
 
 def _corner_spheres(model: Model) -> list[_Corner]:
     """A small sphere at each of the four corners of every joint's contact, on each of its blocks."""
-    from dem.core.contact import joint_width
-
     out = []
     for jn, j in enumerate(model.joints):
         sides = [k for k in (j.a, j.b) if k >= 0]
@@ -207,8 +211,6 @@ def _compliant_pairs(model: Model, settings: Settings, o: MuJoCoOptions, driven_
     (``A`` the pair's inverse mass, ``1/m_a + 1/m_b``), so ``solref = -(k_pt, c_pt) (1 - d) A``. The friction
     rows get the damping ``d / h`` (``h`` the internal step), which takes a sticking joint's slip velocity out
     within one step: with the normal rows' small damping instead, a tilted arch slides apart."""
-    from dem.core.contact import normal_stiffness, point_stiffness, rayleigh_beta
-
     d = o.compliant_impedance
     beta = rayleigh_beta(settings, model)
     base_body = "table" if driven_base else "world"
@@ -240,6 +242,7 @@ class MuJoCoEngine(Engine):
         self._d = None
 
     def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
+        # deferred: an optional extra (docs/architecture.md#imports)
         import mujoco
 
         if self._m is not None:
@@ -334,6 +337,7 @@ class MuJoCoEngine(Engine):
         return Contacts(a, b, pt, nrm, fn, ft)
 
     def versions(self) -> dict:
+        # deferred: an optional extra (docs/architecture.md#imports)
         import mujoco
 
         return {"engine": self.name, "mujoco": mujoco.__version__, "mujoco_options": self.options.to_dict()}

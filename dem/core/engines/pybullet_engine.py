@@ -33,23 +33,27 @@ docs/decisions/006-solver-settings.md):
 from __future__ import annotations
 
 import math
+import os
 import shutil
+import sys
 import tempfile
 from pathlib import Path
 
 import numpy as np
+import pybullet as pb
+from pybullet_utils.bullet_client import BulletClient
+from scipy.spatial.transform import Rotation
 
-from dem.core.contact import hull_offset
+from dem.core.contact import body_point_stiffness, hull_offset, normal_stiffness, rayleigh_beta
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import QUAT_GRID, accel, on_grid, principal_frame, significant
 from dem.core.model import Model
+from dem.core.provenance import package_version
 from dem.core.settings import Settings
 from specimens.mesh import prism
 
 
 def _rot_to_quat(R: np.ndarray) -> tuple[float, float, float, float]:
-    from scipy.spatial.transform import Rotation
-
     q = Rotation.from_matrix(R).as_quat()  # x, y, z, w
     return tuple(float(x) for x in q)
 
@@ -127,9 +131,6 @@ def _write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
 def _quiet(fn):
     """Call ``fn`` with the process's C-level stdout sent to /dev/null (pybullet prints
     ``argv[0]=`` on every connection, which would corrupt JSON output)."""
-    import os
-    import sys
-
     sys.stdout.flush()
     saved = os.dup(1)
     devnull = os.open(os.devnull, os.O_WRONLY)
@@ -151,9 +152,6 @@ class PyBulletEngine(Engine):
 
     # -- construction ---------------------------------------------------------------------
     def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
-        import pybullet as pb
-        from pybullet_utils.bullet_client import BulletClient
-
         if self._p is not None:
             raise RuntimeError("engine already built")
         self._pb = pb
@@ -251,8 +249,6 @@ class PyBulletEngine(Engine):
         """Springs and dashpots at the contact points (dem.core.contact): Bullet combines two bodies'
         stiffnesses in series and adds their dampings, so each body gets twice its point stiffness
         and half its point damping (exact for a joint between bodies of equal joints)."""
-        from dem.core.contact import body_point_stiffness, normal_stiffness, rayleigh_beta
-
         beta = rayleigh_beta(settings, model)
         k_bodies, k_base = body_point_stiffness(model, normal_stiffness(settings, model))
         for bid, k in [*zip(self._ids, k_bodies), (self._base, k_base)]:
@@ -340,8 +336,6 @@ class PyBulletEngine(Engine):
         return Contacts(a, b, col(6), col(7), col(9, 1).reshape(n), ft)
 
     def versions(self) -> dict:
-        from dem.core.provenance import package_version
-
         return {"engine": self.name, "pybullet": package_version("pybullet"),
                 "pybullet_api": int(self._pb.getAPIVersion()) if self._p is not None else None}
 

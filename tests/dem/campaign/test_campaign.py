@@ -3,9 +3,9 @@ from pathlib import Path
 
 import pytest
 
-from dem.campaign.context import CampaignContext
 from dem.campaign.estimate import estimate
 from dem.campaign.runner import all_steps
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 
@@ -69,7 +69,7 @@ def test_machine_speed_times_the_engine_it_is_given(engine, monkeypatch):
 
 
 def test_the_record_step_finds_its_record():
-    from dem.campaign.step_record import _record_path
+    from dem.experiments.record.step_record import _record_path
 
     assert _record_path().is_file()
 

@@ -9,20 +9,21 @@ import html
 import json
 import math
 import re
+import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
-from analytic.limit_discrete import enumerate_mechanisms, solve_lp
-from dem.campaign.context import CampaignContext
+from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+from analytic.motions.inputs import SinePulse
 from dem.campaign.runner import STEPS, default_steps, run_campaign
-from dem.campaign.step_map import map_plan
-from dem.campaign.step_record import record_plan
-from dem.campaign.step_shake import shake_plan
-from dem.experiments.tilt_check import reference_lp
+from dem.common.campaign import CampaignContext
+from dem.experiments.friction_map.step_map import map_plan
+from dem.experiments.record.step_record import record_plan
+from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.tilt.check import reference_lp
 from specimens.blocks import discretise
 from specimens.catalogue import catalogue_rows, select_specimens
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
@@ -43,24 +44,34 @@ SCAN_RATIO = 1.15  # largest ratio of neighbouring shake scan amplitudes (dem_fa
 
 
 # ----------------------------------------------------------------------------- stand-ins
+def _everywhere(mp: pytest.MonkeyPatch, module, name: str, value) -> None:
+    """Patch ``module.name`` and every project module that imported that object by name."""
+    old = getattr(module, name)
+    for m in list(sys.modules.values()):
+        if m is not module and getattr(m, "__name__", "").startswith(("dem.", "analytic.", "specimens.")) \
+                and getattr(m, name, None) is old:
+            mp.setattr(m, name, value)
+    mp.setattr(module, name, value)
+
+
 class StandIns:
     """Monkeypatches of the seams the steps simulate through, and what they were asked."""
 
     def __init__(self, mp: pytest.MonkeyPatch, specimens: list, ctx: CampaignContext):
-        import analytic.figures_limit as figures_limit
-        import dem.experiments.domain as domain
-        import dem.experiments.friction_map as friction_map
-        import dem.experiments.shake as shake
-        import dem.experiments.thresholds as thresholds
-        import dem.studies.cases as cases
+        import analytic.limit.figures as figures_limit
+        import dem.experiments.friction_map.run as friction_map
+        import dem.experiments.shake.domain as domain
+        import dem.experiments.shake.run as shake
+        import dem.experiments.shake.thresholds as thresholds
+        import dem.experiments.tilt.case as cases
         import specimens.catalogue as catalogue
 
         self.runs: list[tuple[str, str, float, float, object]] = []  # (id, kind, freq, pga [g], settings)
         # the catalogue-wide work (the catalogue table, the analytic step's series and figures) on
         # the selected specimens only, and no full-scale figures
-        mp.setattr(catalogue, "CATALOGUE", tuple(specimens))
+        _everywhere(mp, catalogue, "CATALOGUE", tuple(specimens))
         real_figs = figures_limit.catalogue_figures
-        mp.setattr(figures_limit, "catalogue_figures", lambda out, full_scale=True, rows=None: real_figs(out, False, rows))
+        _everywhere(mp, figures_limit, "catalogue_figures", lambda out, full_scale=True, rows=None: real_figs(out, False, rows))
         # tilt step: the closed-form case function, told each test's lambda and mode
         real_make = cases.make_case
 
@@ -72,8 +83,8 @@ class StandIns:
                               else {"mu_star": mu_joint / 2, "lam_rock": lam})
             return c
 
-        mp.setattr(cases, "DEM_CASE", cases.SYNTHETIC_CASE)
-        mp.setattr(cases, "make_case", tilt_make_case)
+        _everywhere(mp, cases, "DEM_CASE", cases.SYNTHETIC_CASE)
+        _everywhere(mp, cases, "make_case", tilt_make_case)
         # the collapse figures replay a short real simulation (0.05 s) at the stand-in's lambda
         real_replay = cases.replay_tilt
 
@@ -83,7 +94,7 @@ class StandIns:
             return real_replay({**case, "protocol": proto},
                                {**results, "bracket": [lam / 1.005, lam], "levels": [[lam / 1.005, 0.0], [lam, 1.0]]})
 
-        mp.setattr(cases, "replay_tilt", short_replay)
+        _everywhere(mp, cases, "replay_tilt", short_replay)
         # map step: the same case function, each specimen with its own mu*
         real_map = friction_map.catalogue_map
 
@@ -92,8 +103,8 @@ class StandIns:
             c["synthetic"] = {"mu_star": MAP_MU_STAR[label], "lam_rock": MAP_LAM_ROCK}
             return c
 
-        mp.setattr(friction_map, "make_case", map_make_case)
-        mp.setattr(friction_map, "catalogue_map", lambda *a, **kw: real_map(*a, **{**kw, "func": cases.SYNTHETIC_CASE}))
+        mp.setattr(friction_map, "make_case", map_make_case)  # the map's own, not the tilt step's
+        _everywhere(mp, friction_map, "catalogue_map", lambda *a, **kw: real_map(*a, **{**kw, "func": cases.SYNTHETIC_CASE}))
         # shake step: the real four-bar domain, computed once here for the stand-in's truth
         (spec,), freqs = shake_plan(ctx)
         self.shake_id, self.freqs = spec.id, tuple(freqs)
@@ -106,7 +117,7 @@ class StandIns:
             assert arch == spec.arch and tuple(fs) == self.freqs
             return self.analytic
 
-        mp.setattr(domain, "analytic_domains", known_domains)
+        _everywhere(mp, domain, "analytic_domains", known_domains)
         self.record_id = record_plan(ctx)[0].id
         self.lam_static = {s.id: solve_lp(discretise(s.arch, config="glued"), REFERENCE_MU_JOINT, REFERENCE_MU_BASE).lam
                            for s in specimens}
@@ -126,7 +137,7 @@ class StandIns:
         mp.setattr(thresholds, "collapses", collapses)
         # the time histories beside the shake thresholds: short real runs (0.05 s)
         real_shake = shake.shake
-        mp.setattr(shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
+        _everywhere(mp, shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
                    real_shake(model, motion, settings, shake.ShakeProtocol(duration=0.05), **kw))
 
 
@@ -196,7 +207,7 @@ def test_catalogue_table_and_heaviest_specimen(campaign):
 
 # ----------------------------------------------------------------------------- analytic
 def test_analytic_table_matches_the_limit_analysis_called_directly(campaign):
-    from analytic.two_bar import lambda_two_bar
+    from analytic.limit.two_bar import lambda_two_bar
 
     rows = {r["id"]: r for r in _rows(campaign["out"], "analytic")}
     assert list(rows) == SPECIMENS.split(",")
@@ -293,7 +304,7 @@ def test_tilt_collapse_figures_of_the_first_rocking_and_first_sliding_specimen(c
 # ----------------------------------------------------------------------------- map
 # ----------------------------------------------------------------------------- lab
 def test_lab_table_holds_the_laboratory_the_calibration_and_the_stand_in(campaign):
-    from analytic.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
+    from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 
     rows = {r["id"]: r for r in _rows(campaign["out"], "lab")}
     tilt = {r["id"]: r for r in _rows(campaign["out"], "tilt")}
@@ -324,7 +335,7 @@ def test_lab_table_holds_the_laboratory_the_calibration_and_the_stand_in(campaig
 
 
 def test_lab_findings_agree_with_the_table(campaign):
-    from analytic.calibration import load_calibration
+    from analytic.limit.calibration import load_calibration
 
     rows = [r for r in _rows(campaign["out"], "lab") if r["kind"] == "laboratory"]
     cal = load_calibration()
@@ -452,8 +463,8 @@ def test_shake_findings_agree_with_the_table(campaign):
 
 # ----------------------------------------------------------------------------- record
 def test_record_table_holds_the_stand_in_collapse_pga(campaign):
-    from analytic.records import read_record
-    from dem.campaign.step_record import RECORD_FILE, _record_path
+    from analytic.motions.records import read_record
+    from dem.experiments.record.step_record import RECORD_FILE, _record_path
 
     stand = campaign["stand"]
     (r,) = _rows(campaign["out"], "record")

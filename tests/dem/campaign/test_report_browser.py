@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from dem.campaign.context import CampaignContext
 from dem.campaign.runner import run_campaign
+from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 BROWSER = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")

@@ -3,7 +3,7 @@ import json
 
 import pytest
 
-from analytic.limit_discrete import enumerate_mechanisms
+from analytic.limit.limit_discrete import enumerate_mechanisms
 from dem.cli import main
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen

@@ -4,12 +4,15 @@ import argparse
 import pytest
 
 from dem.cli import main
-from dem.cli.common import contact_law_settings
-from dem.formats.shake import load_shake
+from dem.common.options import contact_law_settings
+from dem.core.settings import Settings
+from dem.experiments.shake.file import load_shake
+from specimens.errors import ArchdemInputError
 
 
 def _ns(**kw) -> argparse.Namespace:
-    base = {"contact_law": None, "kn": None, "ks": None, "damping_beta": None, "damping_xi": None, "joints": None}
+    base = {"contact_law": None, "kn": None, "youngs": None, "ks": None, "damping_beta": None, "damping_xi": None,
+            "joints": None}
     return argparse.Namespace(**(base | kw))
 
 
@@ -20,6 +23,22 @@ def test_the_law_from_its_options():
                                                                          "damping_xi": 1.0}
     assert contact_law_settings(_ns(joints="table-5.1"), "Sh1-Sd020") == {"contact_law": "compliant", "kn": 4.1e8,
                                                                           "damping_beta": 1.38e-3}
+
+
+@pytest.mark.parametrize("options, fields", [
+    ({"kn": -1.0}, {"contact_law": "compliant", "kn": -1.0}),
+    ({"contact_law": "rigid", "kn": 1e8}, {"contact_law": "rigid", "kn": 1e8}),
+    ({"contact_law": "compliant"}, {"contact_law": "compliant"}),
+    ({"kn": 1e8, "youngs": 1e9}, {"contact_law": "compliant", "kn": 1e8, "youngs": 1e9}),
+    ({"kn": 1e8, "damping_xi": 3.0}, {"contact_law": "compliant", "kn": 1e8, "damping_xi": 3.0}),
+])
+def test_the_command_line_refuses_a_law_in_the_settings_words(options, fields):
+    """One set of checks per setting: the options are refused by Settings' own check, with its message."""
+    with pytest.raises(ArchdemInputError) as cli:
+        contact_law_settings(_ns(**options), None)
+    with pytest.raises(ArchdemInputError) as lib:
+        Settings(**fields)
+    assert str(cli.value) == str(lib.value)
 
 
 def test_a_shake_on_the_studys_joints_stores_them(tmp_path, capsys):

@@ -9,29 +9,29 @@ import functools
 import pytest
 
 from dem.cli import build_parser
-from dem.cli.common import default_of
+from dem.common.options import default_of
 
 
 def _lib():
     """Library source of every physical / numerical default, by (sub-command, dest)."""
-    from analytic.assessment import assess
-    from analytic.calibration import CALIBRATION_FILE
-    from analytic.domain import failure_domain
-    from analytic.kinematic import Height
-    from analytic.modes import POISSON, modes
-    from analytic.spectra import ntc2018
-    from analytic.summary import analyse
-    from dem.campaign.context import CampaignContext
+    from analytic.codes.assessment import assess
+    from analytic.codes.kinematic import Height
+    from analytic.compliant.modes import POISSON, modes
+    from analytic.limit.calibration import CALIBRATION_FILE
+    from analytic.limit.summary import analyse
+    from analytic.motions.spectra import ntc2018
+    from analytic.rocking.domain import failure_domain
+    from dem.common.campaign import CampaignContext
     from dem.core.settings import Settings
-    from dem.experiments.compare_engines import compare
-    from dem.experiments.domain import dem_failure_domain
-    from dem.experiments.fragility import DEFAULT_FRICTION_COV
-    from dem.experiments.friction_map import catalogue_map
-    from dem.experiments.shake import ShakeProtocol
-    from dem.experiments.thresholds import threshold
-    from dem.experiments.tilt import TiltProtocol
-    from dem.plotting.animate import animate
-    from dem.studies.cases import MAP_TILT_TOL
+    from dem.experiments.compare_engines.run import compare
+    from dem.experiments.fragility.run import DEFAULT_FRICTION_COV
+    from dem.experiments.friction_map.run import catalogue_map
+    from dem.experiments.shake.animation import animate
+    from dem.experiments.shake.domain import dem_failure_domain
+    from dem.experiments.shake.run import ShakeProtocol
+    from dem.experiments.shake.thresholds import threshold
+    from dem.experiments.tilt.case import MAP_TILT_TOL
+    from dem.experiments.tilt.run import TiltProtocol
     from specimens.blocks import discretise
 
     s, sp, tp = Settings(), ShakeProtocol(), TiltProtocol()
@@ -121,14 +121,14 @@ def test_no_default_without_a_library_source(cmd):
 
 
 def test_help_texts_show_the_library_values():
-    from analytic.domain import failure_domain
-    from dem.campaign.step_shake import SHAKE_FREQS
+    from analytic.rocking.domain import failure_domain
     from dem.core.settings import Settings
-    from dem.experiments.compare_engines import FRICTIONS
-    from dem.experiments.domain import dem_failure_domain
-    from dem.experiments.shake import ShakeProtocol
-    from dem.experiments.tilt import TiltProtocol
-    from dem.plotting.animate import animate
+    from dem.experiments.compare_engines.run import FRICTIONS
+    from dem.experiments.shake.animation import animate
+    from dem.experiments.shake.domain import dem_failure_domain
+    from dem.experiments.shake.run import ShakeProtocol
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
+    from dem.experiments.tilt.run import TiltProtocol
     from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
     from specimens.catalogue import SPECIMEN_WIDTH
     from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
@@ -163,7 +163,7 @@ def test_help_texts_show_the_library_values():
 
 def test_animate_frames_default_is_the_clis():
     # the CLI's 200 frames became the library default (it read 300 while the CLI passed 200)
-    from dem.plotting.animate import animate
+    from dem.experiments.shake.animation import animate
 
     assert default_of(animate, "max_frames") == 200
 
@@ -171,10 +171,10 @@ def test_animate_frames_default_is_the_clis():
 def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     # `archdem domain --engine dem`: the analytic --amax default means the DEM's own a_max_ratio,
     # the frequencies default to the campaign's shake frequencies
-    import dem.cli.domain_dem as dd
-    from dem.campaign.step_shake import SHAKE_FREQS
+    import dem.experiments.shake.domain_cmd as dd
     from dem.cli import main
-    from dem.experiments.domain import dem_failure_domain
+    from dem.experiments.shake.domain import dem_failure_domain
+    from dem.experiments.shake.step_shake import SHAKE_FREQS
     from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
     seen = {}

@@ -5,7 +5,7 @@ import math
 import ezdxf
 import pytest
 
-from analytic.limit_discrete import solve_lp
+from analytic.limit.limit_discrete import solve_lp
 from dem.cli import main
 from specimens import discretise, get_specimen, read_assembly, write_assembly
 from specimens.exchange import EXAMPLE_DRAWING

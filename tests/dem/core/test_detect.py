@@ -130,7 +130,7 @@ def test_slide_needs_a_slip_above_slide_fraction_of_the_window(f, state, mode, S
 @pytest.mark.parametrize("f, state", [(0.9, "closed"), (1.1, "open")])
 def test_lift_off_parts_the_joint_above_the_hinge_fraction(f, state, S):
     # both ends open by the lift; the slip of a parted joint is not a slide
-    from dem.experiments.friction_map import SLIDING_MODES
+    from dem.experiments.friction_map.run import SLIDING_MODES
 
     m = single_block(B, H)
     pos0, R0 = _rest(m)
@@ -206,7 +206,7 @@ def _stack_pose(m, angle, slip):
 def test_hinges_with_a_little_slip_are_mixed_which_the_friction_map_counts_as_sliding(f, j1, mode, S):
     # a hinge at the base and a slip at J1 just below / above slide_fraction of the window: the
     # rocking/sliding boundary of the friction map's mu* (mixed counts as sliding there)
-    from dem.experiments.friction_map import ROCKING_MODES, SLIDING_MODES
+    from dem.experiments.friction_map.run import ROCKING_MODES, SLIDING_MODES
 
     m = _stack()
     w = B * math.sin(0.02)  # the window: the base hinge's opening

@@ -6,12 +6,12 @@ import math
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.engines import available_engines, get_engine
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
-from dem.experiments.shake import ShakeProtocol, shake
-from dem.experiments.thresholds import threshold
+from dem.experiments.shake.run import ShakeProtocol, shake
+from dem.experiments.shake.thresholds import threshold
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import G

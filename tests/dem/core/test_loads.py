@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from analytic.inputs import SinePulse
+from analytic.motions.inputs import SinePulse
 from dem.core.loads import GroundShake, TiltHold, TiltRamp, TiltStairs, tilt_gravity
 from specimens.constants import G
 

@@ -6,12 +6,13 @@ import ezdxf
 import numpy as np
 import pytest
 
-from analytic.limit_discrete import solve_lp
-from analytic.records import ground_motion
+from analytic.limit.limit_discrete import solve_lp
+from analytic.motions.records import ground_motion
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
-from dem.experiments.shake import shake
-from dem.experiments.tilt import tilt
+from dem.experiments.fragility.run import _model, drawing_structure
+from dem.experiments.shake.run import shake
+from dem.experiments.tilt.run import tilt
 from specimens import discretise, get_specimen, read_assembly, write_assembly
 from specimens.constants import NO_SLIDING_MU
 from specimens.exchange import EXAMPLE_DRAWING
@@ -78,8 +79,6 @@ def test_an_irregular_arch_on_piers_tilts_at_its_lp_without_sliding():
 
 def test_a_fragility_case_carries_the_drawing_whole():
     """A worker rebuilds the drawn structure from the case alone; unperturbed, it is the nominal model."""
-    from dem.experiments.fragility import _model, drawing_structure
-
     asm = read_assembly(EXAMPLE_DRAWING)
     pert = {"edge_loss": 0.0, "edge_loss_sd": 0.0, "size_sd": 0.0, "friction_cov": 0.0}
     a, b = from_assembly(asm), _model(drawing_structure(asm), pert, 1, 0)

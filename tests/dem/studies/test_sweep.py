@@ -1,7 +1,7 @@
 """The sweep engine (dem/studies/sweep.py): one writer, resume, failures, local pool vs Dask.
 
-The case function is ``dem.studies.selftest_cases:evaluate`` (in the package, so spawned pool
-workers and Dask workers import it by name). Evaluations are counted by the files the
+The case function is ``dem.studies.selftest_cases.evaluate`` (in the package, so spawned pool
+workers and Dask workers import it by reference). Evaluations are counted by the files the
 case function writes into ``count_dir``. The independent truth for results is the same
 function called directly in this process.
 """
@@ -18,11 +18,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from dem.studies.selftest_cases import evaluate
+from dem.studies.selftest_cases import _take, evaluate
 from dem.studies.sweep import StudyInterrupted, case_key, load_study, run_study
 from specimens.errors import ArchdemInputError
 
-FUNC = "dem.studies.selftest_cases:evaluate"
+FUNC = evaluate
 NO_DASK = "the cluster extra is not installed (pip install -e '.[cluster]')"
 
 
@@ -34,7 +34,7 @@ def kill_or_evaluate(case: dict) -> dict:
     return evaluate(case)
 
 
-KILL_FUNC = f"{__name__}:kill_or_evaluate"
+KILL_FUNC = kill_or_evaluate
 
 
 def _cases(n, count_dir=None, **extra):
@@ -78,7 +78,7 @@ def test_results_identical_with_1_and_2_workers_and_equal_direct_call(tmp_path):
     for a, b in zip(r2, again):
         assert (a.key, a.params, a.status, a.error, a.wall) == (b.key, b.params, b.status, b.error, b.wall)
         _assert_same(a.results, b.results)
-    assert again.attrs["case_function"] == FUNC
+    assert again.attrs["case_function"] == "dem.studies.selftest_cases:evaluate"
     assert {"archdem", "python", "numpy", "h5py"} <= set(again.attrs["versions"])
 
 
@@ -105,15 +105,17 @@ def test_refuses_to_overwrite_and_to_resume_another_study(tmp_path):
     with pytest.raises(ArchdemInputError, match="study parameters"):
         run_study(_cases(2), FUNC, p, resume=True, progress=False, study_attrs={"config": "free"})
     with pytest.raises(ArchdemInputError, match="case function"):
-        run_study(_cases(2), "dem.studies.selftest_cases:_take", p, resume=True, progress=False,
+        run_study(_cases(2), _take, p, resume=True, progress=False,
                   study_attrs={"config": "glued"})
     with pytest.raises(ArchdemInputError, match="seed"):
         run_study(_cases(2), FUNC, p, resume=True, progress=False, study_attrs={"config": "glued"}, seed=3)
     assert p.read_bytes() == before  # nothing touched the existing study
     with pytest.raises(ArchdemInputError, match="duplicate"):
         run_study(_cases(2) + _cases(1), FUNC, tmp_path / "d.h5", progress=False)
-    with pytest.raises(ArchdemInputError, match="module:function"):
-        run_study(_cases(1), "no_colon", tmp_path / "e.h5", progress=False)
+    for not_importable in ("dem.studies.selftest_cases:evaluate", lambda case: {}):
+        with pytest.raises(ArchdemInputError, match="module-level function"):
+            run_study(_cases(1), not_importable, tmp_path / "e.h5", progress=False)
+    assert not (tmp_path / "e.h5").exists()
 
 
 def test_resume_subset_then_full_evaluates_each_case_once(tmp_path):

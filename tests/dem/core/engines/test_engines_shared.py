@@ -15,7 +15,7 @@ from dem.core.loads import Rest, TiltHold
 from dem.core.model import from_assembly, single_block
 from dem.core.settings import Settings
 from dem.core.simulate import simulate
-from dem.experiments.tilt import TiltProtocol, tilt
+from dem.experiments.tilt.run import TiltProtocol, tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 

@@ -15,7 +15,7 @@ from dem.core.engines.mujoco_engine import (  # noqa: E402
 )
 from dem.core.model import from_assembly, single_block  # noqa: E402
 from dem.core.settings import Settings
-from dem.experiments.tilt import tilt  # noqa: E402
+from dem.experiments.tilt.run import tilt  # noqa: E402
 from specimens.blocks import discretise  # noqa: E402
 from specimens.catalogue import get_specimen  # noqa: E402
 from specimens.constants import NO_SLIDING_MU  # noqa: E402
@@ -102,7 +102,7 @@ def test_contact_forces_balance_the_weight_at_rest():
         e.close()
 
 
-import analytic.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tests below check against)
+import analytic.limit.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tests below check against)
 
 
 # representative subset: the thinnest pointed arch free (PyBullet's worst case, -4 %) and the thickest

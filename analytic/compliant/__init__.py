@@ -1,0 +1,1 @@
+"""Compliant joints: natural frequencies (``modes``) and the tilt by statics (``elastic_tilt``)."""

@@ -1,0 +1,36 @@
+"""``archdem mesh``: the voussoirs' meshes (convex pieces) of an arch."""
+from __future__ import annotations
+
+import argparse
+
+from dem.common.options import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, writable_dir
+from specimens.blocks import discretise
+
+
+def assembly_from_args(args: argparse.Namespace):
+    """``(label, assembly)`` of the arch options and ``--config``/``--shape``."""
+    label, arch = arch_from_args(args)
+    kw = discretisation_kwargs(args, arch)
+    asm = discretise(arch, config=args.config, shape=getattr(args, "shape", default_of(discretise, "shape")), **kw)
+    return label, asm
+
+
+def _mesh(args: argparse.Namespace) -> int:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from specimens.mesh import export_meshes
+
+    label, asm = assembly_from_args(args)
+    out = writable_dir(args.out)
+    files = export_meshes(asm, out, args.format)
+    print(f"{label}: {len(files)} file(s) for {asm.n_bodies} bodies written to {out}")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("mesh", help="export voussoir meshes (convex pieces) of an arch")
+    add_arch_arguments(p)
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
+    p.add_argument("--format", choices=("stl", "obj", "glb"), default="stl")
+    p.add_argument("--out", required=True, help="output directory")
+    p.set_defaults(func=_mesh)

@@ -1,0 +1,62 @@
+"""What every campaign step gets (:class:`CampaignContext`) and the small file helpers they share."""
+from __future__ import annotations
+
+import csv
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from dem.common.joints import contact_fraction, joint_law, joint_law_text
+from specimens.io import atomic_path, to_json
+
+
+@dataclass
+class CampaignContext:
+    """What every step gets: output folder, options, and the log of finished steps."""
+
+    out: Path
+    specimens: list  # list[specimens.catalogue.Specimen]
+    config: str = "glued"
+    engine: str = "pybullet"
+    quick: bool = True
+    workers: int | None = None
+    scheduler: str | None = None  # a Dask scheduler address: every sweep of the campaign runs there
+    log: Callable[[str], None] = print
+    results: dict = field(default_factory=dict)
+    contact: float | str = 1.0  # contact fraction of every joint, or "calibrated" (dem.common.joints)
+    joints: dict | str | None = None  # joint law: None rigid, "table-5.1" or compliant-law settings (dem.common.joints)
+
+    def law_of(self, spec) -> dict:
+        """The contact-law settings of ``spec``'s joints in every simulator step ({} = rigid)."""
+        return joint_law(self.joints, spec.id)
+
+    def joints_text(self) -> str:
+        """The joints of the simulator steps, in words for their summaries."""
+        return joint_law_text(self.joints)
+
+    def contact_of(self, spec) -> float:
+        """The contact fraction of ``spec``'s joints in this campaign."""
+        return contact_fraction(self.contact, spec.arch)
+
+
+def write_csv(path: Path, rows: list[dict]) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+
+def pct(a: float, b: float) -> float:
+    return 100.0 * (a - b) / b
+
+
+def write_json_atomic(path: Path, obj: dict) -> None:
+    with atomic_path(path, overwrite=True) as tmp:
+        tmp.write_text(to_json(obj, indent=2))
+
+
+def studies_dir(ctx: CampaignContext) -> Path:
+    p = ctx.out / "studies"
+    p.mkdir(exist_ok=True)
+    return p

@@ -1,0 +1,2 @@
+"""The code-based assessment of a monument: the figure (``figure``), the command ``assess`` and the
+campaign step ``assess``."""

@@ -1,0 +1,2 @@
+"""Both engines against limit analysis (``run``), the figure (``figure``), the command
+``compare-engines``."""

@@ -1,0 +1,63 @@
+"""``archdem compare-engines``: tilt lambda and mode of each specimen from both engines, at no
+sliding and at the reference friction, next to the discrete limit analysis."""
+from __future__ import annotations
+
+import argparse
+
+from dem.common.options import default_of, print_json, workers_option, writable_file
+from dem.core.engines import available_engines
+from dem.core.settings import Settings
+from dem.experiments.compare_engines.run import FRICTIONS, compare, summary
+from specimens.catalogue import select_specimens
+from specimens.errors import ArchdemInputError
+
+
+def _run(args: argparse.Namespace) -> int:
+    ids = [s.id for s in select_specimens(args.specimens)]
+    engines = tuple(e.strip() for e in args.engines.split(",") if e.strip())
+    for e in engines:
+        if e not in available_engines():
+            raise ArchdemInputError(f"unknown engine {e!r}; available: {', '.join(available_engines())}")
+    if len(engines) != 2:
+        raise ArchdemInputError(f"give two engines to compare, got {len(engines)}")
+    frictions = ("none", "reference") if args.friction == "both" else (args.friction,)
+    if args.workers < 1:
+        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
+    base = Settings() if args.dt is None else Settings(dt=args.dt)
+    if args.plot:
+        writable_file(args.plot)
+    rows = compare(ids, args.config, engines, frictions, base, workers=args.workers)
+    if args.plot:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+        from dem.experiments.compare_engines.figure import save_engine_comparison
+
+        save_engine_comparison(rows, args.plot)
+    if args.json:
+        print_json({"rows": [r.to_dict() for r in rows], "summary": summary(rows), "config": args.config,
+                    "dt": base.dt})
+        return 0
+    e1, e2 = engines
+    print(f"{'id':<12} {'friction':<9} {'LP':>7} {e1:>9} {'err':>7} {e2:>9} {'err':>7} {'diff':>7}  modes")
+    for r in rows:
+        a, b = r.results[e1], r.results[e2]
+        print(f"{r.id:<12} {r.friction:<9} {r.lp_lam:7.4f} {a.lam:9.4f} {100 * r.err_vs_lp(e1):+6.2f}% "
+              f"{b.lam:9.4f} {100 * r.err_vs_lp(e2):+6.2f}% {100 * r.rel_diff:+6.2f}%  {a.mode}/{b.mode}")
+    print("err = (lambda - LP) / LP (an error at no sliding only); diff = (e2 - e1) / e1")
+    return 0
+
+
+def register(sub) -> None:
+    engines = ",".join(default_of(compare, "engines"))
+    p = sub.add_parser("compare-engines", help="tilt lambda from both engines vs limit analysis, per specimen")
+    p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(compare, "config"))
+    p.add_argument("--engines", default=engines, help=f"two engines (default {engines})")
+    p.add_argument("--friction", choices=("both", "none", "reference"), default="both",
+                   help="no sliding, reference friction "
+                        f"{'/'.join(f'{m:g}' for m in FRICTIONS['reference'])}, or both (default)")
+    p.add_argument("--dt", type=float, default=None,
+                   help=f"time step [s] for both engines (default {default_of(Settings, 'dt'):g})")
+    p.add_argument("--workers", type=workers_option, default=1, help="processes (default 1)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")
+    p.set_defaults(func=_run)

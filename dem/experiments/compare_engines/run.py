@@ -1,0 +1,145 @@
+"""Engine cross-check: the tilt test of a specimen run with each engine, at no sliding and at
+the reference friction, next to the discrete limit analysis (LP) of the same blocks.
+
+At no sliding the LP is exact for the discretised arch
+(docs/validation.md#4-no-sliding-tilt-against-the-lp), so each engine's error is measured against
+it. With Coulomb friction the associative LP is no bound
+(docs/physics/limit-analysis.md#6-discrete-arch-static-lp-with-friction); its value is reported
+for orientation only, and the engines are compared with each other.
+"""
+from __future__ import annotations
+
+import math
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.tilt.check import TiltCheck, check_result, reference_lp
+from dem.experiments.tilt.run import tilt
+from specimens.blocks import discretise
+from specimens.catalogue import get_specimen
+from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.errors import ArchdemInputError
+from specimens.processes import die_with_parent
+
+FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
+
+
+@dataclass(frozen=True)
+class ComparisonRow:
+    """A specimen at one friction case: the LP of its blocks and each engine's tilt test
+    (:class:`dem.experiments.tilt.check.TiltCheck`), with the engines' versions.
+
+    ``rel_diff`` = (lambda of the second engine - first) / first; ``err_vs_lp`` per engine =
+    (lambda - lambda_LP) / lambda_LP (meaningful as an error at no sliding only).
+    """
+
+    id: str
+    config: str
+    friction: str
+    mu_joint: float
+    mu_base: float
+    lp_lam: float
+    lp_hinges: tuple
+    results: dict = field(default_factory=dict)
+    versions: dict = field(default_factory=dict)
+
+    @property
+    def engines(self) -> list[str]:
+        return list(self.results)
+
+    @property
+    def rel_diff(self) -> float:
+        e = self.engines
+        if len(e) < 2:
+            return float("nan")
+        a, b = self.results[e[0]].lam, self.results[e[1]].lam
+        return (b - a) / a
+
+    def err_vs_lp(self, engine: str) -> float:
+        return self.results[engine].rel_err
+
+    def to_dict(self) -> dict:
+        d = {k: getattr(self, k) for k in ("id", "config", "friction", "mu_joint", "mu_base", "lp_lam")}
+        d["lp_hinges"] = [list(h) for h in self.lp_hinges]
+        d["engines"] = {}
+        for name, r in self.results.items():
+            d["engines"][name] = {"engine": name, "lam": r.lam, "mode": r.mode, "hinges": [list(h) for h in r.hinges],
+                                  "slides": list(r.slides), "n_sims": r.n_sims, "wall_s": r.wall_s,
+                                  "version": self.versions.get(name, ""), "err_vs_lp": r.rel_err,
+                                  "hinges_match_lp": r.hinges_match_lp}
+        d["rel_diff"] = self.rel_diff
+        return d
+
+
+def _engine_version(name: str) -> str:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.core.provenance import package_version
+
+    return package_version(name)
+
+
+def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> TiltCheck:
+    """The hold-protocol tilt test of ``model`` with ``settings.engine`` beside the LP of its blocks
+    (``assembly``: default the model's own)."""
+    assembly = model.assembly if assembly is None else assembly
+    return check_result(tilt(model, settings, protocol, assembly=assembly), assembly)
+
+
+def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+                     frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
+                     protocol=None) -> list[ComparisonRow]:
+    """Rows (one per friction case) for catalogue specimen ``sid``; ``base`` settings other than
+    friction and engine (e.g. ``dt``) apply to every run."""
+    for f in frictions:
+        if f not in FRICTIONS:
+            raise ArchdemInputError(f"friction case must be one of {', '.join(FRICTIONS)}, got {f!r}")
+    if len(engines) < 1:
+        raise ArchdemInputError("give at least one engine")
+    base = base or Settings()
+    asm = discretise(get_specimen(sid).arch, config=config)
+    model = from_assembly(asm, name=sid)
+    rows = []
+    for f in frictions:
+        mj, mb = FRICTIONS[f]
+        lp = reference_lp(asm, mj, mb)
+        res = {e: check_result(tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, assembly=asm), asm, lp)
+               for e in engines}
+        rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res,
+                                  {e: _engine_version(e) for e in engines}))
+    return rows
+
+
+def _one(args) -> list[ComparisonRow]:
+    return compare_specimen(*args)
+
+
+def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+            frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
+            workers: int = 1) -> list[ComparisonRow]:
+    """:func:`compare_specimen` for each id (in ``workers`` processes), rows in input order."""
+    jobs = [(sid, config, tuple(engines), tuple(frictions), base) for sid in ids]
+    if workers <= 1 or len(jobs) <= 1:
+        out = [_one(j) for j in jobs]
+    else:
+        with ProcessPoolExecutor(min(workers, len(jobs)), initializer=die_with_parent) as ex:
+            out = list(ex.map(_one, jobs))
+    return [r for rows in out for r in rows]
+
+
+def summary(rows: list[ComparisonRow]) -> dict:
+    """Aggregates: per engine the largest and mean |error vs LP| at no sliding, and the largest
+    |relative difference| between engines per friction case."""
+    out: dict = {"no_sliding_err_vs_lp": {}, "max_abs_rel_diff": {}}
+    ns = [r for r in rows if r.friction == "none"]
+    for e in (ns[0].engines if ns else []):
+        errs = [abs(r.err_vs_lp(e)) for r in ns]
+        out["no_sliding_err_vs_lp"][e] = {"max_abs": max(errs), "mean_abs": sum(errs) / len(errs),
+                                          "hinges_match": sum(tuple(r.results[e].hinges) == tuple(r.lp_hinges)
+                                                              for r in ns), "n": len(ns)}
+    for f in FRICTIONS:
+        d = [abs(r.rel_diff) for r in rows if r.friction == f and math.isfinite(r.rel_diff)]
+        if d:
+            out["max_abs_rel_diff"][f] = max(d)
+    return out

@@ -1,0 +1,2 @@
+"""Fragility: ensembles of perturbed realisations under sine pulses (``run``), the result file
+(``file``), the figure (``figure``), the command ``fragility`` and the campaign step ``fragility``."""

@@ -1,0 +1,132 @@
+"""``archdem map``: friction-threshold map (DEM tilt lambda(mu), mode(mu), mu*) with analytic curves."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from dem.common.joints import contact_fraction
+from dem.common.options import (
+    add_contact_law_arguments,
+    add_engine_argument,
+    add_pier_arguments,
+    contact_law_settings,
+    contact_option,
+    default_of,
+    piers_from_args,
+    print_json,
+    study_path,
+    workers_option,
+    writable_dir,
+)
+from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
+from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
+from dem.experiments.tilt.case import MAP_TILT_TOL
+from specimens.catalogue import FULL_SCALE_SPANS, full_scale_set, select_specimens
+from specimens.errors import ArchdemInputError
+
+
+def _specimens(args: argparse.Namespace) -> list:
+    if not args.full_scale:
+        return select_specimens(args.specimens)
+    pool = {s.id: s for s in full_scale_set()}
+    if args.specimens.strip() == "all":
+        return list(pool.values())
+    out = []
+    for sid in (s.strip() for s in args.specimens.split(",") if s.strip()):
+        if sid not in pool:
+            raise ArchdemInputError(f"unknown full-scale specimen {sid!r}; ids look like L10-Sh0.6-Sd0.15 "
+                                    f"(spans 5/10/20, Sh 0/0.2/0.6/1, Sd 0.1/0.15/0.2/0.25)")
+        out.append(pool[sid])
+    if not out:
+        raise ArchdemInputError("no specimens selected")
+    return out
+
+
+def _run(args: argparse.Namespace) -> int:
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.studies.sweep import StudyInterrupted
+
+    specs = _specimens(args)
+    mus = parse_mu_grid(args.mu)
+
+    if not (math.isfinite(args.mu_base) and MIN_FRICTION <= args.mu_base <= MAX_FRICTION):
+        raise ArchdemInputError(f"--mu-base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {args.mu_base}")
+    if args.workers is not None and args.workers < 1:
+        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
+    if not (0 <= args.refine <= 20):
+        raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
+    if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
+        raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
+    piers = piers_from_args(args)
+    for s in specs if piers is not None else ():
+        piers.check(s.arch)
+    # --joints table-5.1 on a map: of its one specimen (a study's settings are common to its cases)
+    law = contact_law_settings(args, specs[0].id if len(specs) == 1 else "several specimens")
+    settings = ({"engine": args.engine} if args.engine != default_of(Settings, "engine") else {}) | law
+    path, resume = study_path(args, "runs/map", f"map-{args.config}")
+    if args.plot:
+        writable_dir(args.plot)
+    try:
+        res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
+                            scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
+                            protocol={"kind": "hold", "tol": args.tol},
+                            settings=settings or None,
+                            contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers)
+    except StudyInterrupted as exc:
+        print(f"archdem: study interrupted: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"archdem: interrupted; finished cases are stored, continue with --resume {path}", file=sys.stderr)
+        return 130
+    if args.plot:
+        res.figures(args.plot)
+    if args.json:
+        print_json(res.to_json())
+        return 0
+
+    def f(v):
+        return "   -  " if v is None else f"{v:6.3f}"
+
+    print(f"friction map ({args.config}, mu_base {args.mu_base:g}, {len(mus)} friction values, "
+          f"{res.rounds} bisection rounds): {res.n_cases} tilts, {res.n_failed} failed, {res.wall_s:.0f} s -> {path}")
+    print(f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP  mu*2bar  lambda_ns  status")
+    for s in res.specimens:
+        th = s.threshold
+        br = f"[{f(th.lo)},{f(th.hi)}]"
+        print(f"{s.id:<22} {s.arch.Sh:5.2f} {s.arch.Sd:5.2f}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
+              f"{f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  {th.status}"
+              f"{'' if th.monotonic else ' (non-monotonic)'}")
+    return 0
+
+
+def register(sub) -> None:
+    mus = default_of(catalogue_map, "mus")
+    p = sub.add_parser("map", help="friction-threshold map: DEM tilt lambda(mu), mode(mu) and mu* per specimen")
+    p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
+    p.add_argument("--config", choices=("glued", "free"), default=default_of(catalogue_map, "config"))
+    p.add_argument("--mu", default=mus, help="joint friction grid START:STOP:STEP or a,b,c "
+                   f"(default {mus}, {len(parse_mu_grid(mus))} values)")
+    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(catalogue_map, "mu_base"),
+                   help=f"block-base friction (default {default_of(catalogue_map, 'mu_base'):g})")
+    p.add_argument("--contact", type=contact_option, default=default_of(catalogue_map, "contact"), metavar="C|calibrated",
+                   help="effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate) "
+                        f"(default {default_of(catalogue_map, 'contact'):g}: the full joint)")
+    p.add_argument("--refine", type=int, default=default_of(catalogue_map, "refine"),
+                   help=f"bisection steps on mu* after the grid (default {default_of(catalogue_map, 'refine')})")
+    p.add_argument("--tol", type=float, default=MAP_TILT_TOL,
+                   help=f"relative lambda tolerance of each tilt (default {MAP_TILT_TOL:g})")
+    p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")
+    add_engine_argument(p)
+    add_contact_law_arguments(p)
+    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
+    p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")
+    p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/map/map-CONFIG[-N].h5)")
+    p.add_argument("--full-scale", dest="full_scale", action="store_true",
+                   help="use the full-scale parametric set (spans "
+                        f"{'/'.join(f'{s:g}' for s in FULL_SCALE_SPANS)} m, "
+                        f"{default_of(catalogue_map, 'n_voussoirs')} voussoirs per side)")
+    p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
+    add_pier_arguments(p)
+    p.add_argument("--json", action="store_true", help="print JSON per specimen")
+    p.set_defaults(func=_run)

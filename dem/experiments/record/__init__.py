@@ -1,0 +1,2 @@
+"""Recorded accelerograms: the DEM runs of records for an assessment (``run``), the command
+``record`` and the campaign step ``record``."""

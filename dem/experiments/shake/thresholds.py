@@ -1,0 +1,329 @@
+"""Shake thresholds: the least collapsing amplitude of a one-cycle sine pulse, and DEM failure
+domains over frequency.
+
+Collapse is not monotonic in the amplitude (Sh02-Sd020 at 4 Hz collapses from ~0.45 g but survives
+again around 0.78-0.9 g; docs/physics/dem.md#10-shake-thresholds-and-dem-failure-domains), so plain
+bisection may return either edge of a survival window. :func:`threshold` therefore
+
+1. **scans** amplitudes ``a_min .. a_max`` with geometric spacing (ratio ``scan_ratio``), in
+   parallel (local processes, all cores by default, or a Dask cluster: :func:`dem.studies.sweep.executor`);
+2. **bisects** (geometric midpoints) the lowest bracket survival -> collapse until
+   ``hi / lo - 1 <= tol`` (1 % by default); the answer is the upper end ``hi`` (a simulated
+   amplitude that collapsed), as for the tilt test. With several processes the bisection runs
+   alongside the rest of the scan as soon as the amplitudes below its bracket are known
+   (:func:`_scan_and_bisect`); the runs, and so the answer, are those of the serial order;
+3. reports every band found by the scan (survival / collapse), its edges at the geometric middle
+   of the scan bracket (resolution ``scan_ratio``) except the bisected first threshold.
+
+How far a threshold is a number of the arch and not of the engine's numerics: robust at 2-4 Hz,
+not converged at 6 Hz in either engine, so read thresholds above ~4 Hz as a range
+(docs/validation.md#10-shake-thresholds).
+
+A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
+(:class:`analytic.motions.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
+in m/s^2 inside; results are reported in g.
+"""
+from __future__ import annotations
+
+import math
+import os
+import time
+from concurrent.futures import FIRST_COMPLETED, wait
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+import numpy as np
+
+from analytic.motions.inputs import GroundMotion, SinePulse
+from analytic.search import Bracket, search
+from dem.core.model import Model, as_model
+from dem.core.settings import Settings
+from dem.experiments.shake.run import ShakeProtocol, collapses
+from specimens.constants import G
+from specimens.errors import ArchdemInputError
+
+SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
+
+
+def sine_motion(amplitude: float, freq: float) -> GroundMotion:
+    """Plain one-cycle sine of ``amplitude`` [m/s^2] and ``freq`` [Hz]."""
+    return SinePulse(float(amplitude), float(freq))
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """One simulated amplitude [g]: collapsed, mode and collapse phase (see :mod:`dem.experiments.shake.run`)."""
+
+    amplitude_g: float
+    collapsed: bool
+    mode: str
+    phase: str | None
+
+    def to_dict(self) -> dict:
+        return {"amplitude_g": self.amplitude_g, "collapsed": self.collapsed, "mode": self.mode, "phase": self.phase}
+
+
+@dataclass(frozen=True)
+class ThresholdResult:
+    """Least collapsing amplitude at one frequency, with all scan bands.
+
+    ``amplitude_g`` is None when nothing up to ``a_max`` collapsed; ``bracket_g`` the final
+    (survival, collapse) bisection bracket; ``bands``: dicts ``from_g``, ``to_g``, ``outcome``
+    (``survival``/``collapse``), ``collapse``; ``runs``: every simulation in order.
+    """
+
+    freq: float
+    amplitude_g: float | None
+    bracket_g: tuple[float, float] | None
+    bands: tuple[dict, ...]
+    runs: tuple[Outcome, ...]
+    scan_ratio: float
+    tol: float
+    wall_s: float
+    mode: str = ""
+    phase: str | None = None
+    extra: dict = field(default_factory=dict)
+    a_range_g: tuple[float, float] | None = None  # the scanned amplitudes [g]
+
+    @property
+    def n_sims(self) -> int:
+        return len(self.runs)
+
+    @property
+    def survival_bands_above(self) -> list[dict]:
+        """Survival bands above the first threshold (temporary recovery)."""
+        if self.amplitude_g is None:
+            return []
+        return [b for b in self.bands if not b["collapse"] and b["from_g"] >= self.amplitude_g * (1 - 1e-9)]
+
+    def summary(self) -> dict:
+        return {"freq": self.freq, "amplitude_g": self.amplitude_g,
+                "bracket_g": list(self.bracket_g) if self.bracket_g else None, "mode": self.mode,
+                "collapse_phase": self.phase, "bands": list(self.bands),
+                "survival_bands_above": self.survival_bands_above, "n_sims": self.n_sims,
+                "scan_ratio": self.scan_ratio, "tol": self.tol, "wall_s": self.wall_s,
+                "runs": [r.to_dict() for r in self.runs], **self.extra}
+
+
+def _run_one(args) -> Outcome:
+    model, settings, protocol, motion_fn, a_g, freq = args
+    c, mode, phase = collapses(model, motion_fn(a_g * G, freq), settings, protocol)
+    return Outcome(float(a_g), bool(c), mode, phase)
+
+
+def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
+    """Geometric amplitudes [g] from ``a_min_g`` to ``a_max_g`` with step ratio at most ``ratio``."""
+    if not (0 < a_min_g < a_max_g and math.isfinite(a_max_g)):
+        raise ArchdemInputError(f"amplitude range must satisfy 0 < a_min < a_max, got {a_min_g:g}, {a_max_g:g} g")
+    if not (ratio > 1):
+        raise ArchdemInputError(f"scan ratio must be > 1, got {ratio:g}")
+    n = int(math.ceil(math.log(a_max_g / a_min_g) / math.log(ratio) - 1e-9)) + 1
+    return np.geomspace(a_min_g, a_max_g, max(n, 2))
+
+
+def _map(fn, jobs: list, workers: int, scheduler: str | None = None) -> list:
+    if not scheduler and (workers <= 1 or len(jobs) <= 1):
+        return [fn(j) for j in jobs]
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.studies.sweep import executor
+
+    with executor(min(workers, len(jobs)), scheduler) as (ex, _):
+        return list(ex.map(fn, jobs))
+
+
+def _lowest_bracket(scan: list) -> int | None:
+    """Index of the lowest collapsing scan amplitude once every amplitude below it is known
+    (and survived); -1 if every amplitude is known and none collapsed; None while unknown."""
+    for k, r in enumerate(scan):
+        if r is None:
+            return None
+        if r.collapsed:
+            return k
+    return -1
+
+
+def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, max_sims: int,
+                     scheduler: str | None = None) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
+    """Outcomes of the scan (in grid order) and of the bisection of its lowest survival ->
+    collapse bracket (in order; geometric midpoints until ``hi / lo - 1 <= tol`` or ``max_sims``
+    runs in all), and the final ``(lo, hi, run at hi)``; no bisection and None when the lowest
+    amplitude collapses or nothing does.
+
+    With several ``workers`` the bisection starts as soon as the scan below its bracket is known
+    and has priority on the next free process, while the rest of the scan fills the others: the
+    bisection no longer waits for the top of the scan, and no process idles behind its serial
+    chain while scan amplitudes remain (the thresholds of the campaign: 11 rounds of simulations
+    become about 9 on two cores). Every run is the one the serial order would make, so the
+    answer does not depend on the number of processes."""
+    n = len(grid)
+    scan: list[Outcome | None] = [None] * n
+    bis: list[Outcome] = []
+    bracket: Bracket | None = None  # the bisection's, once the scan below it is known
+
+    def next_mid() -> float | None:
+        nonlocal bracket
+        if bracket is None:
+            k = _lowest_bracket(scan)
+            if k is None or k <= 0:
+                return None
+            bracket = Bracket(scan[k - 1].amplitude_g, scan[k].amplitude_g, tol, "ratio", True, scan[k - 1], scan[k])
+        if bracket.wide() and n + len(bis) < max_sims:
+            return bracket.mid()
+        return None
+
+    def take(r: Outcome) -> None:
+        bis.append(r)
+        bracket.take(r.amplitude_g, r.collapsed, r)
+
+    def result():
+        return list(scan), bis, None if bracket is None else (bracket.lo, bracket.hi, bracket.hi_run)
+
+    if workers <= 1 and not scheduler:
+        scan = [_run_one(job(a)) for a in grid]
+        while (mid := next_mid()) is not None:
+            take(_run_one(job(mid)))
+        return result()
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.studies.sweep import executor
+
+    with executor(min(workers, n), scheduler) as (ex, workers):
+        running: dict = {}  # future -> scan index, or None for the bisection's run
+        nxt = 0
+        while True:
+            while len(running) < workers:
+                mid = None if None in running.values() else next_mid()
+                if mid is not None:
+                    running[ex.submit(_run_one, job(mid))] = None
+                elif nxt < n:
+                    running[ex.submit(_run_one, job(grid[nxt]))] = nxt
+                    nxt += 1
+                else:
+                    break
+            if not running:
+                return result()
+            done, _ = wait(running, return_when=FIRST_COMPLETED)
+            for f in done:
+                i = running.pop(f)
+                if i is None:
+                    take(f.result())
+                else:
+                    scan[i] = f.result()
+
+
+def _bands(runs: Sequence[Outcome], first: float | None) -> tuple[dict, ...]:
+    rs = sorted(runs, key=lambda r: r.amplitude_g)
+    bands: list[dict] = []
+    for k, r in enumerate(rs):
+        if bands and bands[-1]["collapse"] == r.collapsed:
+            bands[-1]["to_g"] = r.amplitude_g
+            continue
+        if bands:
+            lo = rs[k - 1].amplitude_g
+            edge = first if (first is not None and r.collapsed and lo < first <= r.amplitude_g * (1 + 1e-12)
+                             and not any(b["collapse"] for b in bands)) else math.sqrt(lo * r.amplitude_g)
+            bands[-1]["to_g"] = edge
+            bands.append({"from_g": edge, "to_g": r.amplitude_g, "outcome": "collapse" if r.collapsed else "survival",
+                          "collapse": r.collapsed, "edge_bracket_g": [lo, r.amplitude_g]})
+        else:
+            bands.append({"from_g": r.amplitude_g, "to_g": r.amplitude_g,
+                          "outcome": "collapse" if r.collapsed else "survival", "collapse": r.collapsed,
+                          "edge_bracket_g": None})
+    return tuple(bands)
+
+
+def static_onset(model: Model, settings: Settings) -> float:
+    """Static collapse multiplier ``lambda`` of the model's blocks at the settings' frictions (the static
+    LP, :func:`analytic.limit.limit_discrete.solve_lp`): no pulse below ``lambda g`` moves the arch."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.limit_discrete import solve_lp
+
+    if model.assembly is None:
+        raise ArchdemInputError(f"{model.name}: the static onset needs the blocks the model was built from")
+    return float(solve_lp(model.assembly, settings.mu_joint, settings.mu_base).lam)
+
+
+def threshold(target, freq: float, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
+              a_min_g: float | None = None, a_max_g: float | None = None, scan_ratio: float = 1.15, tol: float = 0.01,
+              workers: int | None = None, motion_fn: Callable[[float, float], GroundMotion] = sine_motion,
+              max_sims: int = 60, config: str = "glued", scheduler: str | None = None) -> ThresholdResult:
+    """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target`` (a specimen id,
+    Specimen, PointedArch, Assembly or Model, see :func:`dem.core.model.as_model`); see the module
+    docstring. The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`;
+    nothing moves below it) to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``); ``workers``: processes for the
+    scan (default all cores, 1 = serial); ``scheduler``: a Dask scheduler address to run on instead.
+    """
+    model = as_model(target, config=config)
+    if not (math.isfinite(freq) and freq > 0):
+        raise ArchdemInputError(f"frequency must be a positive number of Hz, got {freq!r}")
+    if not (0 < tol < 0.5):
+        raise ArchdemInputError(f"bisection tolerance must be in (0, 0.5), got {tol!r}")
+    settings = settings or Settings()
+    protocol = protocol or ShakeProtocol()
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    wall0 = time.perf_counter()
+    a_min_g = static_onset(model, settings) if a_min_g is None else a_min_g
+    a_max_g = SCAN_TOP * a_min_g if a_max_g is None else a_max_g
+    grid = scan_grid(a_min_g, a_max_g, scan_ratio)
+    job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
+    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims, scheduler)
+    runs = scan + bis
+    if not any(r.collapsed for r in scan):
+        return ThresholdResult(float(freq), None, None, _bands(runs, None), tuple(runs), scan_ratio, tol,
+                               time.perf_counter() - wall0, a_range_g=(a_min_g, a_max_g))
+    if bracket is not None:  # the lowest scan bracket was bisected alongside the scan
+        lo, hi, hi_r = bracket
+        return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs),
+                               scan_ratio, tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
+    # the lowest scanned amplitude collapses: step down (at most 6 times) until something survives, then bisect
+
+    def run(a: float) -> Outcome:
+        r = _run_one(job(a))
+        runs.append(r)
+        return r
+
+    a0 = scan[0].amplitude_g
+    below = search(run, a0 / scan_ratio, a0, math.inf, rule="ratio", is_upper=lambda r: r.collapsed, hi_run=scan[0],
+                   down=lambda a: a / scan_ratio, ends="first", max_down=6)  # tol inf: find the bracket only
+    if below.status == "no_lower":
+        raise ArchdemInputError(f"collapse at every amplitude down to {below.hi:.4g} g; lower --a-min")
+    res = search(run, below.lo, below.hi, tol, rule="ratio", geometric=True, is_upper=lambda r: r.collapsed,
+                 lo_run=below.lo_run, hi_run=below.hi_run, max_runs=max_sims - len(runs))
+    lo, hi, hi_r = res.lo, res.hi, res.hi_run
+    return ThresholdResult(float(freq), float(hi), (float(lo), float(hi)), _bands(runs, hi), tuple(runs), scan_ratio,
+                           tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
+
+
+def _threshold_job(args) -> ThresholdResult:
+    model, freq, settings, protocol, kw = args
+    return threshold(model, freq, settings, protocol, workers=1, **kw)
+
+
+def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | None = None,
+                   protocol: ShakeProtocol | None = None, workers: int | None = None, scheduler: str | None = None,
+                   **kw) -> dict:
+    """DEM failure domain: :func:`threshold` at every frequency [Hz], in parallel over the grid
+    (``workers`` processes, default all cores; or a Dask ``scheduler``). ``kw`` go to :func:`threshold` (amplitude range,
+    scan ratio, tol). Returns a dict shaped like the analytic domain JSON: ``points`` (``x`` [Hz],
+    ``amplitude_g``, ``mode``: the collapse phase mapped to the analytic names), ``bands``
+    (``x``, ``from_g``, ``to_g``, ``outcome``, ``collapse``) and ``thresholds`` (full summaries)."""
+    freqs = [float(f) for f in freqs]
+    if not freqs or not all(math.isfinite(f) and f > 0 for f in freqs):
+        raise ArchdemInputError("the frequency grid must contain positive numbers")
+    settings = settings or Settings()
+    protocol = protocol or ShakeProtocol()
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    wall0 = time.perf_counter()
+    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers, scheduler)
+    names = {"before-first-rebound": "first-half-cycle", "after-first-rebound": "after-impact"}
+    points, bands = [], []
+    for r in res:
+        if r.amplitude_g is not None:
+            points.append({"x": r.freq, "amplitude_g": r.amplitude_g, "mode": names.get(r.phase or "", r.phase),
+                           "dem_mode": r.mode})
+        # further survival -> collapse edges (scan resolution)
+        for b0, b1 in zip(r.bands[:-1], r.bands[1:]):
+            if not b0["collapse"] and b1["collapse"] and r.amplitude_g is not None and b1["from_g"] > r.amplitude_g * 1.001:
+                points.append({"x": r.freq, "amplitude_g": b1["from_g"], "mode": "collapse", "dem_mode": ""})
+        bands += [{"x": r.freq, **{k: b[k] for k in ("from_g", "to_g", "outcome", "collapse")}} for b in r.bands]
+    return {"engine": "dem", "points": points, "bands": bands, "thresholds": [r.summary() for r in res],
+            "wall_s": time.perf_counter() - wall0}

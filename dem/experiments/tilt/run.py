@@ -1,0 +1,263 @@
+"""Virtual experiments: ``simulate`` (any load) and the tilt test (hold-and-bisect, staircase, ramp).
+
+``simulate(model, settings, load, duration)`` is the one entry point: it builds an engine,
+applies ``load.gravity(t)`` before every step, records poses every ``settings.record_every``
+and applies the collapse criterion of :mod:`dem.core.detect`. A shake-table test is ``simulate``
+with a :class:`dem.core.loads.GroundShake` load.
+
+Tilt protocols (lambda = tan theta; gravity rotated at constant magnitude, horizontal part +x):
+
+* ``hold`` (default): a level lambda is reached by a smooth ramp (``ramp_time``, 0.5 s) and held
+  ``hold_time`` (1 s; a level at rest 0.5 s into the hold ends there, ``rest_after``); the
+  threshold is bracketed around a first estimate (``guess`` if given;
+  with ``start="lp"``, the default when the blocks are known, the static LP of the same blocks,
+  :func:`lp_guess`; otherwise a fast continuous ramp) and bisected until the bracket is narrower
+  than ``tol`` relative; an end of the first bracket is simulated only if the bisection ends on
+  it (``probe_ends``), so both ends of the final bracket were simulated. The answer is the upper
+  end of the bracket (first collapsing level); non-monotonic outcomes near the threshold
+  (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold) make thresholds reproducible
+  to about +-1 %.
+* ``staircase``: one simulation, lambda raised by ``step`` and held ``stair_hold`` each time;
+  the answer is the step during which the collapsing motion started (:func:`onset_time`).
+* ``ramp``: one simulation at a constant rate; lambda read at the onset of the collapsing
+  motion (:func:`onset_time`), which lags the threshold by a rate-dependent amount.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field, replace
+from typing import Callable
+
+from analytic.search import search
+from dem.core import detect
+from dem.core.loads import TiltHold, TiltRamp, TiltStairs
+from dem.core.model import Model, as_model
+from dem.core.settings import Settings
+from dem.core.simulate import SimResult, onset_time, simulate
+from specimens.errors import ArchdemInputError
+
+# First bracket of the hold protocol, relative to its first estimate: the widest that reaches the
+# 0.5 % tolerance in 3 bisections (docs/decisions/002-guess-bracket.md)
+GUESS_BRACKET = (0.972, 1.01)
+GUESS_STEPS = (1.05, 0.95)  # an end of the first bracket that turns out wrong moves out by these factors
+# an end of the first bracket is simulated only if the bisection ends on it: 3 simulations per test
+# instead of 5, the same answers (docs/decisions/003-probe-ends.md)
+PROBE_ENDS = "last"
+
+
+@dataclass(frozen=True)
+class TiltProtocol:
+    """Tilt-test protocol parameters (stored with each result)."""
+
+    kind: str = "hold"  # hold | staircase | ramp
+
+    # hold: each level ramped, held, ended early once at rest (docs/decisions/001-hold-time-and-rest-rule.md)
+    ramp_time: float = 0.5  # smooth ramp to each level [s]; faster ramps lost hinge layouts (decision 007)
+    hold_time: float = 1.0  # longest time held at a level [s]: a block sliding near mu needs it
+    rest_after: float | None = 0.5  # from this time into the hold [s] a level at rest ends as stable; None: never
+    rest_window: float = 0.1  # window of the rest rule [s]
+    rest_growth: float = 3e-4  # rest rule: displacement growth over rest_window / size
+
+    # hold: the search (docs/physics/dem.md#7-tilt-test-hold-and-bisect)
+    tol: float = 0.005  # relative bracket width at which bisection stops
+    guess_bracket: tuple[float, float] = GUESS_BRACKET  # first bracket [x guess]
+    probe_ends: str = PROBE_ENDS  # "last": an end simulated only if the bisection ends on it; "first": both first
+    scan_rate: float = 0.25  # rate of the first-estimate ramp [1/s]
+    max_sims: int = 30
+
+    step: float = 0.01  # staircase: lambda increment
+    stair_hold: float = 0.5  # staircase: hold per step [s]
+    rate: float = 0.02  # ramp: d lambda / dt [1/s]
+    lam_max: float = 3.0  # give up above this lambda
+
+    guess: float | None = None  # hold: first estimate of lambda; None: found as ``start`` says
+    start: str = "auto"  # hold: "scan" (a ramp at scan_rate), "lp" (lp_guess), "auto" (lp when the blocks are known)
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("hold", "staircase", "ramp"):
+            raise ArchdemInputError(f"tilt protocol must be hold, staircase or ramp, got {self.kind!r}")
+        for k in ("ramp_time", "hold_time", "tol", "scan_rate", "step", "stair_hold", "rate", "lam_max",
+                  "rest_window", "rest_growth") + (("rest_after",) if self.rest_after is not None else ()):
+            v = getattr(self, k)
+            if not (math.isfinite(v) and v > 0):
+                raise ArchdemInputError(f"tilt protocol {k} must be > 0, got {v!r}")
+        # a number or None (a non-number, e.g. the former "lp" sentinel of stored map cases, is an input error)
+        if self.guess is not None and not (isinstance(self.guess, (int, float)) and not isinstance(self.guess, bool)
+                                           and math.isfinite(self.guess) and 0 < self.guess < self.lam_max):
+            raise ArchdemInputError(f"tilt protocol guess must be in (0, lam_max), got {self.guess!r}")
+        if self.start not in ("auto", "scan", "lp"):
+            raise ArchdemInputError(f"tilt protocol start must be auto, scan or lp, got {self.start!r}")
+        if self.probe_ends not in ("first", "last"):
+            raise ArchdemInputError(f"tilt protocol probe_ends must be first or last, got {self.probe_ends!r}")
+        try:  # a list read back from JSON becomes the tuple
+            lo, hi = (float(x) for x in self.guess_bracket)
+        except (TypeError, ValueError):
+            raise ArchdemInputError(f"tilt protocol guess_bracket must be two numbers, got {self.guess_bracket!r}") from None
+        if not (0 < lo < hi and math.isfinite(hi)):
+            raise ArchdemInputError(f"tilt protocol guess_bracket must satisfy 0 < low < high, got {self.guess_bracket!r}")
+        object.__setattr__(self, "guess_bracket", (lo, hi))
+
+    def slowed(self, factor: float) -> "TiltProtocol":
+        """The same protocol run ``factor`` times slower: every duration (ramp, hold, staircase
+        step, and the rest rule's start and window) x factor, every rate / factor."""
+        durations = ("ramp_time", "hold_time", "stair_hold", "rest_after", "rest_window")
+        kw = {k: getattr(self, k) * factor for k in durations if getattr(self, k) is not None}
+        kw.update({k: getattr(self, k) / factor for k in ("scan_rate", "rate")})
+        return replace(self, **kw)
+
+
+@dataclass
+class TiltResult:
+    """The answer of a tilt test."""
+
+    label: str
+    model: Model
+    settings: Settings
+    protocol: TiltProtocol
+    lam: float
+    bracket: tuple[float, float]
+    n_sims: int
+    wall_s: float
+    mode: str
+    joints: list
+    levels: list  # (lambda, collapsed) of each simulation, in order
+    collapse: SimResult | None
+    stable: SimResult | None
+    criterion: dict
+    versions: dict = field(default_factory=dict)
+    result_file: str = ""
+
+    @property
+    def theta_deg(self) -> float:
+        return math.degrees(math.atan(self.lam))
+
+    @property
+    def out_of_plane(self) -> dict:
+        return self.collapse.out_of_plane if self.collapse is not None else {}
+
+    def summary(self) -> dict:
+        """The JSON answer of ``archdem tilt``."""
+        return {
+            "id": self.label, "lambda": self.lam, "theta_deg": self.theta_deg, "mode": self.mode,
+            "joints": [j.to_dict() if hasattr(j, "to_dict") else j for j in self.joints],
+            "bracket": list(self.bracket), "n_sims": self.n_sims, "wall_s": self.wall_s,
+            "protocol": self.protocol.kind, "config": self.model.source.get("config", ""),
+            "contact": self.model.source.get("contact", 1.0),
+            "mu_joint": self.settings.mu_joint, "mu_base": self.settings.mu_base, "planar": self.settings.planar,
+            "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
+            "out_of_plane": self.out_of_plane, "result_file": self.result_file,
+        }
+
+
+def lp_guess(assembly, settings: Settings) -> float | None:
+    """First estimate of the tilt lambda of ``assembly`` (a :mod:`specimens.blocks` assembly):
+    the static LP of the same blocks at the settings' frictions, or None if it has none."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.limit_discrete import solve_lp
+
+    try:
+        lam = float(solve_lp(assembly, settings.mu_joint, settings.mu_base).lam)
+    except Exception:  # no admissible LP (e.g. degenerate geometry): fall back to the ramp scan
+        return None
+    return lam if math.isfinite(lam) and lam > 0 else None
+
+
+def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float) -> SimResult:
+    """One simulation of the hold protocol: smooth ramp to ``lam`` over ``proto.ramp_time``,
+    then held ``proto.hold_time`` [s], or less if the blocks come to rest (``proto.rest_after``)."""
+    rest = None
+    if proto.rest_after is not None and proto.rest_after < proto.hold_time:
+        rest = (proto.ramp_time + proto.rest_after, proto.rest_window, proto.rest_growth * model.size)
+    return simulate(model, settings, TiltHold(lam, proto.ramp_time, g=settings.g), proto.ramp_time + proto.hold_time,
+                    rest=rest)
+
+
+def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None = None,
+         label: str | None = None, assembly=None, config: str = "glued",
+         on_level: Callable[[float, SimResult], None] | None = None) -> TiltResult:
+    """Tilt test of ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model: see
+    :func:`dem.core.model.as_model`, which cuts an arch in the ``config`` configuration); see the
+    module docstring. ``assembly``: the blocks the model was built from (default: the model's own),
+    needed by a hold protocol with ``start="lp"`` and used by ``start="auto"`` (the default; the
+    ramp scan without it). The result's ``protocol`` holds the resolved start and, with the LP
+    start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold)."""
+    model = as_model(target, config=config)
+    assembly = model.assembly if assembly is None else assembly
+    settings = settings or Settings()
+    proto = protocol or TiltProtocol()
+    wall0 = time.perf_counter()
+    if proto.start == "auto":
+        proto = replace(proto, start="lp" if assembly is not None else "scan")
+    if proto.kind == "hold" and proto.guess is None and proto.start == "lp":
+        if assembly is None:
+            raise ValueError("a tilt protocol with start='lp' needs the assembly of the model")
+        proto = replace(proto, guess=lp_guess(assembly, settings))  # None (no LP): the ramp scan
+    levels: list[tuple[float, bool]] = []
+    collapse = stable = None
+    if proto.kind == "hold":
+        if proto.guess is not None:
+            n = 0
+            hi, lo = proto.guess_bracket[1] * proto.guess, proto.guess_bracket[0] * proto.guess
+            up, down = GUESS_STEPS
+        else:
+            scan = simulate(model, settings, TiltRamp(proto.scan_rate, g=settings.g), proto.lam_max / proto.scan_rate)
+            n = 1
+            if not scan.collapsed:
+                raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+            # the ramp's level at detection overshoots the held threshold by 10-18 % (catalogue,
+            # reference friction, rate 0.25/s): the bracket starts 15 % below it
+            est = proto.scan_rate * scan.t_collapse
+            hi, lo = est, 0.85 * est
+            up, down = 1.1, 0.85
+
+        def run(lam: float) -> SimResult:
+            r = hold_level(model, settings, proto, lam)
+            levels.append((lam, r.collapsed))
+            if on_level is not None:
+                on_level(lam, r)
+            return r
+
+        res = search(run, lo, hi, proto.tol, rule="width/hi", is_upper=lambda r: r.collapsed,
+                     up=lambda x: x * up, down=lambda x: x * down, ends=proto.probe_ends, limit=proto.lam_max,
+                     max_runs=proto.max_sims - n)
+        n += res.runs
+        if res.status == "no_upper":
+            raise ArchdemInputError(f"no collapse up to lambda = {res.hi:g} under held levels")
+        if not res.bracketed:
+            raise ArchdemInputError(f"no bracket of a held and a collapsing level within {proto.max_sims} simulations "
+                                    f"(levels {', '.join(f'{x:.4g}' for x, _ in levels)}); raise max_sims")
+        lam, bracket, collapse, stable = res.hi, (res.lo, res.hi), res.hi_run, res.lo_run
+    elif proto.kind == "staircase":
+        load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
+        period = proto.stair_hold + load.rise
+        r = simulate(model, settings, load, period * math.ceil(proto.lam_max / proto.step))
+        n = 1
+        if not r.collapsed:
+            raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+        # the answer is the step during which the collapsing motion started (every lower step
+        # was held without it), not the one at which the collapse criterion fired: slow
+        # collapses just above the threshold take longer than one hold to travel that far
+        k = math.floor(onset_time(model, settings, r) / period + 1e-9)
+        lam = proto.step * (k + 1)
+        levels.append((lam, True))
+        collapse, bracket = r, (proto.step * k, lam)
+    else:
+        r = simulate(model, settings, TiltRamp(proto.rate, g=settings.g), proto.lam_max / proto.rate)
+        n = 1
+        if not r.collapsed:
+            raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
+        # lambda at the onset of the collapsing motion; it still lags the threshold by the time
+        # the mechanism needs to move onset_displacement (for a block sliding on a ramp of rate r:
+        # about r^(2/3) (6 d / g)^(1/3), i.e. 1 % of mu = 0.3 at r = 0.005/s)
+        t_on = onset_time(model, settings, r)
+        lam = proto.rate * t_on
+        levels.append((lam, True))
+        collapse, bracket = r, (proto.rate * max(t_on - settings.record_every, 0.0), lam)
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.core.provenance import run_provenance
+
+    return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
+                      n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
+                      collapse.joints if collapse else [], levels, collapse, stable,
+                      detect.criterion(settings, model), run_provenance(settings.engine))

@@ -1,1 +1,0 @@
-"""Figures of the simulator's results (matplotlib's object-oriented API; no backend is chosen here)."""

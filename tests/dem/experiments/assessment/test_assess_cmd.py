@@ -1,0 +1,112 @@
+"""``archdem assess``: the kinematic checks of an arch (or an arch on piers) against a site spectrum."""
+import json
+
+import pytest
+
+from analytic.motions.spectra import ec8, ntc2018
+from dem.cli import main
+from specimens.constants import G
+
+NTC = ["--spectrum", "ntc2018", "--ag", "0.25", "--F0", "2.4", "--Tc-star", "0.3", "--soil", "C"]
+
+
+def _json(capsys, argv):
+    assert main(argv) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def _check(d, kind):
+    return next(c for c in d["checks"] if c["kind"] == kind)
+
+
+def test_assess_an_arch_on_an_ntc_site(capsys):
+    d = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--json"])
+    site = ntc2018(0.25 * G, 2.4, 0.3, "C")
+    lin, nl = _check(d, "linear"), _check(d, "non-linear")
+    assert d["spectrum"]["S"] == pytest.approx(site.S) and lin["demand_ag"] == pytest.approx(site.ag)
+    assert d["a0_star"] == pytest.approx(d["alpha0"] * G / (d["e_star"] * d["FC"])) and d["FC"] == 1.35
+    # the site's ag at which the peak ground acceleration equals a0*, times q
+    sld = ntc2018(lin["capacity_ag_SLD"], 2.4, 0.3, "C")
+    assert sld.pga == pytest.approx(d["a0_star"], rel=1e-8) and lin["capacity_ag"] == pytest.approx(2 * sld.ag)
+    assert lin["safety_index"] == pytest.approx(lin["capacity_ag"] / site.ag)
+    assert nl["d_u_star"] == pytest.approx(0.4 * d["d0_star"]) and d["du_star"] == nl["d_u_star"]
+    assert d["safety_index"] == min(lin["safety_index"], nl["safety_index"])
+    # the displacement demand at the capacity's ag equals the ultimate displacement
+    at_cap = ntc2018(nl["capacity_ag"], 2.4, 0.3, "C", damping=8.0)
+    assert float(at_cap.SDe(nl["period"])) == pytest.approx(nl["d_u_star"], rel=1e-6)
+    # a better knowledge level (FC 1) raises a0* by 1.35
+    d1 = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--FC", "1", "--json"])
+    assert d1["a0_star"] == pytest.approx(1.35 * d["a0_star"]) and d1["safety_index"] > d["safety_index"]
+
+
+def test_assess_an_arch_on_piers_on_an_ec8_site(capsys):
+    piers = ["--pier-height", "0.4", "--pier-width", "0.144", "--pier-courses", "4"]
+    d = _json(capsys, ["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1", "--soil", "B", "--json"])
+    bare = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", "ec8", "--ag", "0.1", "--soil", "B", "--json"])
+    assert _check(d, "linear")["demand_pga"] == pytest.approx(ec8(0.1 * G, "B").pga)
+    # loads along -x (a positive ground acceleration): the left pier rocks on its outer foot
+    assert any(h["joint"] == "LP0" and h["face"] == "extrados" for h in d["mechanism"]["hinges"])
+    assert d["alpha0"] < bare["alpha0"] and _check(d, "linear")["safety_index"] < _check(bare, "linear")["safety_index"]
+    assert main(["assess", "Sh06-Sd015", *piers, "--spectrum", "ec8", "--ag", "0.1"]) == 0
+    assert "safety index" in capsys.readouterr().out
+
+
+def test_a_user_spectrum_file_scales_linearly(tmp_path, capsys):
+    """The EC8 spectrum written to a file gives the same checks as the code's (the file's own grid)."""
+    import numpy as np
+
+    site = ec8(0.2 * G, "A")
+    T = np.linspace(0, 4, 4001)
+    f = tmp_path / "site.txt"
+    f.write_text("# T [s], Se [g]\n" + "".join(f"{t:.4f}, {s:.8f}\n" for t, s in zip(T, site.Se(T) / G)))
+    code = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", "ec8", "--ag", "0.2", "--json"])
+    user = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", str(f), "--json"])
+    for kind in ("linear", "non-linear"):
+        assert _check(user, kind)["safety_index"] == pytest.approx(_check(code, kind)["safety_index"], rel=2e-3)
+
+
+def test_frp_strips_and_the_report(tmp_path, capsys):
+    rep = tmp_path / "a.html"
+    d = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--frp", "100,0.01,20,10", "--report", str(rep), "--json"])
+    f = d["frp"]
+    assert f["strips"]["force_N"] == pytest.approx(10e6 * 0.01e-3 * 0.02)
+    assert f["lambda"] > d["alpha0"] and f["alpha0"] == f["lambda"] and f["e_star"] <= 1
+    assert f["safety_index"] > d["safety_index"]
+    page = rep.read_text()
+    assert "With FRP strips" in page and page.count("data:image/png;base64,") == 2
+    assert main(["assess", "Sh06-Sd015", *NTC, "--report", str(rep)]) == 2  # never overwritten
+    assert "exists" in capsys.readouterr().err
+
+
+def test_a_mechanism_at_a_height_asks_more(capsys):
+    ground = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--json"])
+    high = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--z-ratio", "0.8", "--T1", "0.5", "--floors", "3", "--json"])
+    for kind in ("linear", "non-linear"):
+        assert _check(high, kind)["safety_index"] < _check(ground, kind)["safety_index"]
+    slc = _json(capsys, ["assess", "Sh06-Sd015", *NTC, "--limit-state", "SLC", "--json"])
+    assert [c["kind"] for c in slc["checks"]] == ["non-linear"] and slc["du_star"] == pytest.approx(0.6 * slc["d0_star"])
+
+
+def test_the_noh_gumbad_example(capsys):
+    """The fitted vault reproduces the published multipliers (0.421, 0.361, 0.239) and the strips raise them."""
+    d = _json(capsys, ["assess", "noh-gumbad", "--json"])
+    rows = {(r["configuration"], r["frp"]): r for r in d["rows"]}
+    for name, lam in (("ring alone", 0.421), ("half-height piers", 0.361), ("full-height piers", 0.239)):
+        bare, frp = rows[(name, False)], rows[(name, True)]
+        assert bare["lambda"] == pytest.approx(lam, abs=1e-3)
+        assert frp["lambda"] > bare["lambda"] and frp["safety_index"] > bare["safety_index"]
+    assert d["spectrum"]["ag"] == pytest.approx(3.67) and d["strips"]["width_mm"] == pytest.approx(680)
+    assert main(["assess", "noh-gumbad", "--pier-height", "2", "--pier-width", "1"]) == 2
+    assert "its own geometry" in capsys.readouterr().err
+
+
+def test_records_matched_and_shaken(short_records, capsys):
+    """Two short records (CSV) matched to the site and run on the DEM; the code's verdict beside the DEM's."""
+    files = short_records
+    d = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", "ec8", "--ag", "0.1", "--records", *files,
+                       "--workers", "1", "--json"])
+    rec = d["records"]
+    assert len(rec["matched"]) == len(rec["runs"]) == 2 and rec["verdict"]["n_records"] == 2
+    assert rec["period_range"][0] == pytest.approx(0.2 * _check(d, "non-linear")["period"])
+    assert all(m["scale"] > 0 and r["peak_d_star"] >= 0 for m, r in zip(rec["matched"], rec["runs"]))
+    assert rec["verdict"]["d0_star"] == d["d0_star"]

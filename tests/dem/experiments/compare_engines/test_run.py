@@ -1,0 +1,48 @@
+"""Engine cross-check: row arithmetic (identities), one real comparison row against the LP, and
+the CLI's input errors."""
+import math
+
+import pytest
+
+from dem.experiments.compare_engines.run import ComparisonRow, compare_specimen, summary
+from dem.experiments.tilt.check import TiltCheck
+
+pytest.importorskip("mujoco", reason="the mujoco extra is not installed (pip install -e '.[mujoco]')")
+
+
+def _row(friction, lp, lams, hinges=(("L1", "intrados"),)):
+    res = {e: TiltCheck("S", "glued", e, 10.0, 10.0, lam, "rocking", hinges, (), 5, 1.0, lp, hinges) for e, lam in lams.items()}
+    return ComparisonRow("S", "glued", friction, 10.0, 10.0, lp, hinges, res, {e: "x" for e in lams})
+
+
+def test_row_arithmetic_and_summary():
+    # definitions: err = (lam - LP)/LP, diff = (second - first)/first, summary = max / mean of |.|
+    a = _row("none", 0.5, {"pybullet": 0.49, "mujoco": 0.5025})
+    b = _row("none", 0.4, {"pybullet": 0.38, "mujoco": 0.4})
+    c = _row("reference", 0.3, {"pybullet": 0.3, "mujoco": 0.27})
+    assert a.err_vs_lp("pybullet") == pytest.approx(-0.02)
+    assert a.rel_diff == pytest.approx((0.5025 - 0.49) / 0.49)
+    s = summary([a, b, c])
+    assert s["no_sliding_err_vs_lp"]["pybullet"]["max_abs"] == pytest.approx(0.05)
+    assert s["no_sliding_err_vs_lp"]["mujoco"]["mean_abs"] == pytest.approx(0.0025)
+    assert s["max_abs_rel_diff"]["reference"] == pytest.approx(0.1)
+    d = a.to_dict()
+    assert d["engines"]["mujoco"]["hinges_match_lp"] and d["rel_diff"] == pytest.approx(a.rel_diff)
+    assert math.isnan(_row("none", 0.5, {"mujoco": 0.5}).rel_diff)
+
+
+def test_compare_specimen_no_sliding_mujoco_against_lp():
+    # a real row: MuJoCo at no sliding within 1 % of the exact LP (measured -0.3 %), same hinges
+    (row,) = compare_specimen("Sh02-Sd020", "glued", engines=("mujoco",), frictions=("none",))
+    assert abs(row.err_vs_lp("mujoco")) <= 0.01
+    assert tuple(row.results["mujoco"].hinges) == row.lp_hinges
+
+
+@pytest.mark.parametrize("argv", [["--engines", "pybullet,nope"], ["--engines", "mujoco"],
+                                  ["--specimens", "XX"], ["--workers", "0"]])
+def test_cli_bad_input_exits_2(argv, capsys):
+    from dem.cli import main
+
+    assert main(["compare-engines", *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err

@@ -1,0 +1,93 @@
+"""Tilt test against the discrete limit analysis (docs/validation.md#4-no-sliding-tilt-against-the-lp) on a representative specimen;
+the 11 specimens x 2 configurations run in benchmarks/validate_dem.py."""
+import pytest
+
+import analytic.limit.limit_discrete as lim
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.tilt.run import TiltProtocol, tilt
+from specimens.blocks import discretise
+from specimens.catalogue import get_specimen
+from specimens.constants import NO_SLIDING_MU
+
+SID = "Sh02-Sd020"
+
+
+@pytest.fixture(scope="module")
+def case():
+    asm = discretise(get_specimen(SID).arch, config="glued")
+    m = from_assembly(asm, name=SID)
+    ns = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU), assembly=asm)  # the default protocol
+    return asm, m, ns
+
+
+# Measured on this specimen with the default protocol: no sliding 0.3513 (+0.05 % from the LP, LP
+# hinge layout), reference friction 0.3497 (from the former first bracket (0.95, 1.01) x LP: 0.3494,
+# -0.50 %, and 0.3507). Which catalogue case misses is a matter of the last
+# bits (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold): with levels
+# ramped 1 s instead of 0.5 s this specimen collapsed spuriously at 0.3441 (-2.0 %) in a disordered
+# mechanism and failed the last two checks below, while the catalogue as a whole scored the same
+# (benchmarks/validate_dem.py; the defaults' figures: docs/validation.md#4-no-sliding-tilt-against-the-lp).
+
+
+@pytest.mark.slow
+def test_no_sliding_lambda_matches_lp(case):
+    asm, m, ns = case
+    lp = lim.solve_lp(asm, float("inf"), float("inf"))
+    # the issue's tolerance: 3 % (PyBullet's measured bias with the defaults: mean 0.63 %, 22 of 22
+    # catalogue cases within 3 %, 19-22 over seven runs: docs/validation.md#4-no-sliding-tilt-against-the-lp)
+    assert abs(ns.lam - lp.lam) / lp.lam <= 0.03
+
+
+@pytest.mark.slow
+def test_no_sliding_lambda_of_this_specimen(case):
+    # this case's own reading beside the 3 % rule: measured +0.05 % (0.35133 against 0.35115).
+    # 1 %: thresholds near the bracket are reproducible to +-1 % (twice the 0.5 % bisection bracket;
+    # docs/validation.md#7-non-monotonic-outcomes-near-the-threshold); a regression moves it further
+    asm, m, ns = case
+    lp = lim.solve_lp(asm, float("inf"), float("inf"))
+    assert ns.lam == pytest.approx(lp.lam, rel=0.01)
+
+
+@pytest.mark.slow
+def test_no_sliding_hinges_match_lp(case):
+    asm, m, ns = case
+    lp = lim.solve_lp(asm, float("inf"), float("inf"))
+    hinges = tuple((j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide"))
+    # the LP layout, or another four-hinge mechanism within 0.5 % of the LP lambda (the issue's rule:
+    # near-optimal mechanisms are indistinguishable at the DEM's +-1 % threshold reproducibility)
+    if hinges != lp.hinges:
+        assert len(hinges) == 4
+        assert abs(lim.mechanism_lambda(asm, hinges) - lp.lam) <= 0.005 * lp.lam
+    assert ns.mode == "rocking"
+
+
+@pytest.mark.slow
+def test_reference_friction_not_above_no_sliding(case):
+    # docs/validation.md#6-reference-friction; 1 % = the reproducibility of thresholds measured near the bracket
+    asm, m, ns = case
+    ref = tilt(m, Settings(), assembly=asm)
+    assert ref.lam <= 1.01 * ns.lam
+
+
+@pytest.mark.slow
+def test_halving_dt(case):
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate: halving dt changes lambda by < 2 %
+    asm, m, ns = case
+    s = Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU)
+    half = tilt(m, s.with_(dt=s.dt / 2), assembly=asm)
+    assert abs(half.lam - ns.lam) / ns.lam < 0.02
+
+
+@pytest.mark.slow
+def test_halving_the_hold_ramp_rate(case):
+    # docs/validation.md#8-insensitivity-to-time-step-and-rate / the issue: halving the hold
+    # protocol's rate (TiltProtocol.slowed(2): ramp, hold and the rest rule's start and window
+    # twice as long) changes lambda by < 2 %. Measured with the
+    # defaults (benchmarks/validate_dem.py --sensitivity): -0.47 % here and on Sh06-Sd015 (the same
+    # with the rest rule's times left at 0.5 s and 0.1 s); from the former first bracket (0.95, 1.01),
+    # -1.5 % here (0.3441 against 0.3494: the spurious collapse described above), +0.8 % on Sh06-Sd015
+    asm, m, ns = case
+    slow = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU),
+                TiltProtocol().slowed(2.0), assembly=asm)
+    assert abs(slow.lam - ns.lam) / ns.lam < 0.02
