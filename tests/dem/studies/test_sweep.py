@@ -349,3 +349,23 @@ def test_a_scheduler_lost_mid_study_leaves_a_resumable_study(tmp_path):
     assert 2 <= done < len(cases)
     res = run_study(cases, FUNC, p, workers=2, resume=True, progress=False)
     assert [r.status for r in res] == ["ok"] * len(cases)
+
+
+def test_studies_on_one_pool_store_what_each_stores_alone(tmp_path):
+    """run_studies: each study in its own file with its own parameters, the records run_study gives it
+    alone; a file named twice is refused before anything is written."""
+    from dem.studies.sweep import run_studies
+
+    a, b = _cases(3), _cases(2, y=1.0)
+    both = run_studies([(a, tmp_path / "a.h5", {"s": "a"}, 1), (b, tmp_path / "b.h5", {"s": "b"}, 2)], FUNC,
+                       workers=2, progress=False)
+    alone = [run_study(a, FUNC, tmp_path / "a1.h5", workers=1, progress=False, study_attrs={"s": "a"}, seed=1),
+             run_study(b, FUNC, tmp_path / "b1.h5", workers=1, progress=False, study_attrs={"s": "b"}, seed=2)]
+    for x, y in zip(both, alone):
+        assert (x.attrs["study_attrs"], x.attrs["seed"]) == (y.attrs["study_attrs"], y.attrs["seed"])
+        assert [r.key for r in x] == [r.key for r in y] and all(r.ok for r in x)
+        for r, q in zip(x, y):
+            _assert_same(r.results, q.results)
+    with pytest.raises(ArchdemInputError, match="share a file"):
+        run_studies([(a, tmp_path / "c.h5", None, None), (b, tmp_path / "c.h5", None, None)], FUNC, progress=False)
+    assert not (tmp_path / "c.h5").exists()
