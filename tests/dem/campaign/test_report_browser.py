@@ -14,6 +14,8 @@ from dem.campaign.context import CampaignContext
 from dem.campaign.runner import run_campaign
 from specimens.catalogue import select_specimens
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 BROWSER = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
 
 _PROBE = """<script>
