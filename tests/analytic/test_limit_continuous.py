@@ -75,6 +75,7 @@ def test_lambda_grows_with_thickness(results):
     assert a20.Rp == pytest.approx(a25.Rp, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_symmetry_and_result_fields(results):
     arch = get_specimen("Sh1-Sd010").arch
     r = results["Sh1-Sd010"]

@@ -159,6 +159,7 @@ def test_analytic_domains_agree_with_failure_domain_called_directly(analytic):
 
 
 @pytest.mark.parametrize("freq", FREQS)
+@pytest.mark.slow
 def test_four_bar_threshold_separates_survival_from_collapse(analytic, freq):
     """The four-bar's own dynamics just below and just above its least collapsing amplitude."""
     from analytic import linkage
