@@ -29,6 +29,8 @@ from specimens.catalogue import catalogue_rows, select_specimens
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
 from specimens.errors import ArchdemInputError
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 SPECIMENS = "Sh02-Sd015,Sh02-Sd020,Sh1-Sd025"  # two of one sharpness, both quick-map ends, the shake specimen
 # the stand-ins' truths
 TILT_FACTOR = 1.02  # tilt lambda = 1.02 x the LP at the same frictions

@@ -29,3 +29,17 @@ def test_friction_product_rule_gives_the_requested_pairs():
         assert all(a * f_base == pytest.approx(1.0, rel=1e-12) for a in f)
     finally:
         e.close()
+
+
+def test_building_an_engine_prints_nothing():
+    # pybullet writes a "build time" banner to stderr at import and argv[0] on connection: a
+    # campaign's workers would print them between its progress lines
+    import subprocess
+    import sys
+
+    code = ("from dem.core.engines import get_engine\nfrom dem.core.model import as_model\n"
+            "from dem.core.settings import Settings\ne = get_engine('pybullet')\n"
+            "e.build(as_model('Sh06-Sd015'), Settings())\ne.close()\nprint('built')\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout == "built\n" and out.stderr == ""
