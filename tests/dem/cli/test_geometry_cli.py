@@ -29,7 +29,8 @@ def test_assess_runs_on_the_drawn_example(capsys):
     # along -x): the LP without sliding in that direction (the structure is not symmetric: +x differs)
     lam = solve_lp(asm, math.inf, math.inf, load_sign=-1).lam
     assert d["mechanism"]["lambda"] == pytest.approx(lam, rel=1e-7) != solve_lp(asm, math.inf, math.inf).lam
-    assert {c["kind"] for c in d["checks"]} == {"linear", "non-linear"}
+    # the activation (a0*/PGA convention) beside the code's linear and non-linear checks
+    assert {c["kind"] for c in d["checks"]} == {"activation", "linear", "non-linear"}
 
 
 @pytest.mark.slow

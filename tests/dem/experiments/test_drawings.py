@@ -39,6 +39,7 @@ def test_the_model_read_back_is_the_engines_same_input(pair):
     assert b.source["kind"] == "drawing" and b.source["drawing"]["format"] == "dxf"
 
 
+@pytest.mark.slow  # two shakes
 def test_a_shake_of_the_drawn_arch_is_the_catalogue_arch_s(pair):
     motion = ground_motion(sine=4.0, amplitude=0.5)
     sa, sb = shake(pair[0], motion), shake(pair[1], motion)

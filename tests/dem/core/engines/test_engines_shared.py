@@ -20,7 +20,8 @@ from specimens.catalogue import get_specimen
 B, H = 0.1, 0.2  # b/h = 0.5
 
 
-ENGINES = [pytest.param(e, marks=pytest.mark.skipif(not engine_installed(e), reason=f"{e} is not installed"))
+ENGINES = [pytest.param(e, marks=[pytest.mark.skipif(not engine_installed(e), reason=f"{e} is not installed")]
+                        + ([pytest.mark.slow] if e == "lmgc90" else []))  # a worker process per simulation
            for e in available_engines()]
 
 

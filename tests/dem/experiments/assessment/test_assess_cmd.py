@@ -93,6 +93,7 @@ def test_a_mechanism_at_a_height_asks_more(capsys):
     assert slc["du_star"] == pytest.approx(0.6 * slc["d0_star"]) and slc["safety_index"] == slc["checks"][1]["safety_index"]
 
 
+@pytest.mark.slow  # three configurations, with and without strips
 def test_the_noh_gumbad_example(capsys):
     """The fitted vault reproduces the published multipliers (0.421, 0.361, 0.239) and the strips raise them."""
     d = _json(capsys, ["assess", "noh-gumbad", "--json"])
@@ -159,6 +160,7 @@ def test_a_tie_at_mid_pier(capsys):
     assert xa < 0 < xb and ya == pytest.approx(-0.2) and yb == pytest.approx(-0.2)
 
 
+@pytest.mark.slow  # records shaken on the DEM
 def test_records_on_the_tied_structure(short_records, capsys):
     """With a tie (and no strips) the records shake the tied structure, its tie in the engine, against the tied
     assessment."""
