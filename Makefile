@@ -1,11 +1,12 @@
-# Quick start:  make demo   (results and figures under runs/demo)
-#               make test   (the whole test suite)
+# Quick start:  make demo       (results and figures under runs/demo)
+#               make test       (the whole test suite, on every core)
+#               make test-fast  (the tests not marked slow: about a minute, every package)
 PYTHON ?= $(shell command -v python3.11 || command -v python3)
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test bench venv clean browser test-py313
+.PHONY: demo test test-fast bench venv clean browser test-py313
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -23,8 +24,15 @@ venv: $(STAMP)
 demo: $(STAMP)
 	$(BIN)/archdem campaign --quick --out runs/demo
 
+# one pytest worker per core (pytest-xdist); worksteal hands a finished worker the queued tests of a
+# busy one, so the minutes-long campaign tests do not leave a core idle at the end
+XDIST := -n auto --dist worksteal
+
 test: $(STAMP) browser
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q $(XDIST)
+
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -q $(XDIST) -m "not slow"
 
 # The report test renders the campaign report in headless Chromium (Debian's package);
 # installed here when possible, otherwise that one test is skipped with the reason.

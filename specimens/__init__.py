@@ -8,10 +8,12 @@ from specimens.catalogue import (
     get_specimen,
 )
 from specimens.errors import ArchdemInputError
+from specimens.exchange import read_assembly, write_assembly
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 
 __all__ = [
     "Assembly", "Block", "Body", "Joint", "discretise", "joint_angles", "CATALOGUE", "SPECIMEN_IDS",
     "Specimen", "full_scale_set", "get_specimen", "ArchdemInputError", "PointedArch", "Piers",
+    "read_assembly", "write_assembly",
 ]

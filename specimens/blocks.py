@@ -204,6 +204,21 @@ class Assembly:
     def crown_body(self) -> Body:
         return self.body("C")
 
+    @property
+    def crown_index(self) -> int:
+        """Index of the body whose displacement is reported as the crown's."""
+        return next(k for k, b in enumerate(self.bodies) if b.name == "C")
+
+    @property
+    def size(self) -> float:
+        """The collapse criterion's length [m]: the ring thickness."""
+        return float(self.arch.t)
+
+    @property
+    def is_chain(self) -> bool:
+        """Bodies and joints alternate along one chain from base to base (the four-hinge enumeration applies)."""
+        return True
+
     def parameters(self) -> dict:
         """The discretisation parameters, for result files."""
         return {
@@ -213,6 +228,13 @@ class Assembly:
             **({"bands": {j.name: list(j.band) for j in self.joints}} if self.imperfect else {}),
             **({"piers": self.piers.describe(self.arch)} if self.piers is not None else {}),
         }
+
+
+def joint_normal(p_i: np.ndarray, p_e: np.ndarray) -> np.ndarray:
+    """Unit normal of the joint ``p_i``-``p_e``: the direction ``p_i -> p_e`` turned clockwise (every
+    joint's ends are ordered so that this points from body ``a`` to body ``b``)."""
+    d = np.asarray(p_e, float) - np.asarray(p_i, float)
+    return np.array([d[1], -d[0]]) / float(np.linalg.norm(d))
 
 
 def check_contact(contact: float) -> float:
@@ -382,7 +404,12 @@ def discretise(
     from the intrados end), e.g. an imperfect realisation (:mod:`specimens.imperfection`);
     ``piers``: the arch stands on two :class:`~specimens.piers.Piers` instead of the rigid base
     (docs/physics/geometry.md#14-arches-on-piers).
+
+    A drawn assembly (:mod:`specimens.drawn`) passed as ``arch`` is returned as drawn, with
+    ``contact`` applied; ``config`` does not apply to it, and the cutting options are refused.
     """
+    if isinstance(arch, Assembly):
+        return _as_drawn(arch, n_voussoirs, crown_fraction, shape, density, segments, contact, bands, piers)
     if not isinstance(n_voussoirs, (int, np.integer)) or n_voussoirs < 1:
         raise ArchdemInputError(f"number of voussoirs per side must be an integer >= 1, got {n_voussoirs!r}")
     if not (math.isfinite(crown_fraction) and crown_fraction > 0):
@@ -455,10 +482,8 @@ def discretise(
     def add(name: str, a: int, b: int, side: int, k: int) -> None:
         p_i = arch.point(psi[k], arch.Ri, side)
         p_e = arch.point(psi[k], arch.Re, side)
-        s = math.sin(psi[k])
-        c = math.cos(psi[k])
-        normal = np.array([s, c]) if side < 0 else np.array([s, -c])
-        joints.append(Joint(len(joints), name, a, b, p_i, p_e, normal, float(psi[k]),
+        # from the end points (not sin/cos of psi): a drawing of these blocks read back has the same normals
+        joints.append(Joint(len(joints), name, a, b, p_i, p_e, joint_normal(p_i, p_e), float(psi[k]),
                             bands.get(name, central_band(contact))))
 
     left_names = [f"L{k}" for k in range(1, n + 1)] + ["C"]
@@ -484,6 +509,22 @@ def discretise(
         blocks, bodies = _relieved(blocks, bodies, joints)
     return Assembly(arch, config, shape, int(n_voussoirs), float(crown_fraction), float(density), int(segments),
                     tuple(blocks), tuple(bodies), tuple(joints), psi, contact, bool(bands), piers)
+
+
+def _as_drawn(asm: Assembly, n_voussoirs, crown_fraction, shape, density, segments, contact, bands, piers) -> Assembly:
+    """A drawn assembly handed to :func:`discretise`: its blocks are cut already."""
+    if not hasattr(asm, "with_contact"):
+        raise ArchdemInputError("discretise takes a PointedArch or a drawn assembly, not an assembly cut already")
+    given = [name for name, v, d in (("the number of voussoirs", n_voussoirs, DEFAULT_VOUSSOIRS),
+                                     ("a crown width", crown_fraction, 1.0), ("a block shape", shape, "linearised"),
+                                     ("segments", segments, 4), ("contact bands", bands, None), ("piers", piers, None))
+             if not (v is d or v == d)]
+    if given:
+        raise ArchdemInputError(f"a drawn assembly is cut as drawn: {given[0]} does not apply to it")
+    if density not in (DEFAULT_DENSITY, asm.density):
+        raise ArchdemInputError(f"the drawn assembly was read with density {asm.density:g} kg/m^3; give the density "
+                                "when reading the drawing")
+    return asm.with_contact(contact)
 
 
 def _on_piers(arch: PointedArch, piers: Piers, blocks: list[Block], bodies: list[Body], joints: list[Joint],

@@ -17,6 +17,8 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
     arch = assembly.arch
     if ax is None:
         ax = Figure(figsize=(7, 5.5)).subplots()
+    if arch is None:
+        return _draw_drawn(assembly, ax, title, face_colors, joint_colors)
     for k, body in enumerate(assembly.bodies):
         fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if body.name != "C" else "#c4a97a")
         if assembly.contact == 1.0:
@@ -64,6 +66,41 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
     ax.set_title(title or f"Sh = {arch.Sh:.2f}, Sd = {arch.Sd:.2f}")
+    ax.autoscale_view()
+    return ax
+
+
+def _draw_drawn(assembly, ax, title, face_colors, joint_colors):
+    """A drawn assembly (no arch): bodies named at their centroids, joints numbered, the supports hatched."""
+    size = assembly.size * 1000
+    for k, body in enumerate(assembly.bodies):
+        fc = face_colors[k] if face_colors is not None else ("#d9c7a5" if k != assembly.crown_index else "#c4a97a")
+        for piece in body.pieces:
+            ax.add_patch(Polygon(piece * 1000, closed=True, fc=fc, ec=fc, lw=0.3))
+        ax.add_patch(Polygon(body.outline * 1000, closed=True, fc="none", ec="k", lw=0.8))
+        c = body.centroid * 1000
+        ax.text(c[0], c[1], body.name, ha="center", va="center", fontsize=6, color="0.3")
+    for j in assembly.joints:
+        p = np.array(j.contact_points) * 1000
+        col = (joint_colors or {}).get(j.name, "tab:red" if j.is_base else "tab:blue")
+        ax.plot(p[:, 0], p[:, 1], color=col, lw=1.6)
+        # beyond the joint's outer (p_e) end, as on an arch; a support's below its joint
+        lab = j.p_e * 1000 + 0.5 * size * j.tangent
+        if j.is_base:
+            lab = p.mean(axis=0) - 0.4 * size * np.asarray(j.normal) * (1.0 if j.a < 0 else -1.0)
+        ax.text(lab[0], lab[1], f"{j.index}" + ("" if j.name == f"J{j.index}" else f" {j.name}"), ha="center",
+                va="center", fontsize=6, color=col)
+    src = assembly.source
+    ax.text(0.02, 0.98, f"{src.get('file', '')} ({src.get('units', 'm')})\n{assembly.n_bodies} bodies, "
+            f"{len(assembly.joints)} joints ({sum(j.is_base for j in assembly.joints)} on supports), "
+            f"{assembly.total_mass:.4g} kg\n" + ("one chain: four-hinge enumeration applies" if assembly.is_chain
+                                                  else "not one chain: LP and DEM only"),
+            transform=ax.transAxes, va="top", fontsize=8, family="monospace")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(title or src.get("file", "drawing"))
+    ax.margins(0.1)
     ax.autoscale_view()
     return ax
 

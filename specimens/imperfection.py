@@ -76,4 +76,19 @@ def realise(arch: PointedArch, imperfection: Imperfection, seed: int | None, rea
     return discretise(arch, contact=nominal.contact, bands=imperfection.bands(nominal, seed, realisation), **discretise_kw)
 
 
-__all__ = ["Imperfection", "realise", "MIN_CONTACT"]
+def realise_drawn(assembly: Assembly, imperfection: Imperfection, seed: int | None, realisation: int = 0) -> Assembly:
+    """A drawn assembly (:mod:`specimens.drawn`, full blocks) with ``imperfection``: every joint loses
+    ``edge_loss`` at each edge (nominal: ``seed=None`` or no scatter), or realisation ``realisation``
+    of ``seed``; its joints have their own depths, so the nominal contact is per joint."""
+    if imperfection.edge_loss == 0.0 and (seed is None or imperfection.edge_loss_sd == 0.0):
+        return assembly
+    sd = 0.0 if seed is None else imperfection.edge_loss_sd
+    bands = Imperfection(imperfection.edge_loss, sd).bands(assembly, 0 if seed is None else seed, realisation)
+    for j in assembly.joints:
+        if 2.0 * imperfection.edge_loss > (1.0 - MIN_CONTACT) * j.length:
+            raise ArchdemInputError(f"an edge loss of {imperfection.edge_loss * 1e3:g} mm leaves less than "
+                                    f"{MIN_CONTACT:g} of joint {j.name} ({j.length * 1e3:.4g} mm) in contact")
+    return assembly.with_bands(bands)
+
+
+__all__ = ["Imperfection", "realise", "realise_drawn", "MIN_CONTACT"]

@@ -6,6 +6,35 @@ os.environ.setdefault("MPLBACKEND", "Agg")
 
 import pytest  # noqa: E402
 
+#: Timeout [s] of a test marked ``slow`` that sets none of its own (the global one, for the rest, is in
+#: pyproject.toml); a Dask cluster restarting killed workers took over 900 s on a machine shared 4 ways.
+SLOW_TIMEOUT = 1200
+
+
+def pytest_collection_modifyitems(items):
+    for item in items:
+        if item.get_closest_marker("slow") and not item.get_closest_marker("timeout"):
+            item.add_marker(pytest.mark.timeout(SLOW_TIMEOUT))
+
+
+#: A test not marked ``slow`` belongs to ``make test-fast`` and should take about 1 s; one that took
+#: longer than this [s] (twice that, for a busy machine) is named at the end of the run, to be marked.
+FAST_LIMIT = 2.0
+_unmarked: dict[str, float] = {}
+
+
+def pytest_runtest_logreport(report):
+    if report.when in ("setup", "call") and "slow" not in report.keywords:
+        _unmarked[report.nodeid] = _unmarked.get(report.nodeid, 0.0) + report.duration
+
+
+def pytest_terminal_summary(terminalreporter):
+    over = sorted(((d, n) for n, d in _unmarked.items() if d > FAST_LIMIT), reverse=True)
+    if over:
+        terminalreporter.write_sep("-", f"{len(over)} tests not marked slow took over {FAST_LIMIT:g} s: mark them slow")
+        for d, n in over:
+            terminalreporter.write_line(f"{d:7.1f} s  {n}")
+
 
 @pytest.fixture
 def short_records(tmp_path):

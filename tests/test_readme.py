@@ -6,6 +6,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
 
@@ -14,6 +16,7 @@ def test_readme_is_short():
     assert len(README.read_bytes()) <= 8000
 
 
+@pytest.mark.slow
 def test_readme_python_example_runs_and_agrees_with_limit_analysis():
     blocks = re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), flags=re.S)
     assert len(blocks) == 1

@@ -405,6 +405,9 @@ def strengthened_collapse(arch, strips: Strips | None, density: float = DEFAULT_
     from analytic.limit.limit_discrete import solve_lp
     from analytic.rocking.linkage import four_bar_through
 
+    if getattr(arch, "arch", True) is None:  # a drawn assembly (specimens.drawn): no ring to cut finely
+        raise ArchdemInputError("FRP strips are modelled on the fine cut of a two-centred ring; a drawing of blocks "
+                                "has no ring to cut: assess it without --frp")
     if piers is None:
         asm = discretise(arch, n_voussoirs=n_ring, config="free", density=density)
     else:

@@ -30,6 +30,7 @@ from typing import Sequence
 
 import numpy as np
 from scipy.optimize import linprog
+from scipy.sparse import csr_array
 
 from analytic.limit.layout import FourHingeLayout, Hinge, MacroBlock
 from specimens.blocks import Assembly
@@ -218,6 +219,15 @@ class LPResult:
         return tuple((k, f) for k, f in self.joint_hinge_face.items() if f)
 
 
+def _sparse(entries: dict[tuple[int, int], float], shape: tuple[int, int]):
+    """A CSR matrix of ``entries`` without explicit zeros (what HiGHS gets from the dense matrix)."""
+    keys = [k for k, v in entries.items() if v != 0.0]
+    if not keys:
+        return csr_array(shape)
+    rows, cols = np.array(keys).T
+    return csr_array((np.array([entries[k] for k in keys]), (rows, cols)), shape=shape)
+
+
 def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: float | None = None,
                      tension: np.ndarray | None = None, ties: Sequence = ()) -> LPResult:
     """Maximise ``lambda`` for a :class:`ContactModel` (see :func:`solve_lp`); ``tension`` (n_joints, 2):
@@ -234,7 +244,8 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
     iN = lambda j, k: 2 * j + k  # noqa: E731
     iV = lambda j, k: 2 * nj + 2 * j + k  # noqa: E731
     il = 4 * nj
-    A = np.zeros((3 * nb, nv))
+    # sparse (an assembly of many blocks would not fit densely), summed in the dense order, zeros dropped
+    acc: dict[tuple[int, int], float] = {}
     rhs = np.zeros(3 * nb)
     c = model.centroid / L
     for j in range(nj):
@@ -246,33 +257,35 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
                     continue
                 r = p - c[body]
                 for col, d in ((iN(j, k), n), (iV(j, k), tvec)):
-                    A[3 * body, col] += sgn * d[0]
-                    A[3 * body + 1, col] += sgn * d[1]
-                    A[3 * body + 2, col] += sgn * (r[0] * d[1] - r[1] * d[0])
+                    for row, v in ((3 * body, sgn * d[0]), (3 * body + 1, sgn * d[1]),
+                                   (3 * body + 2, sgn * (r[0] * d[1] - r[1] * d[0]))):
+                        acc[row, col] = acc.get((row, col), 0.0) + v
     for t, tie in enumerate(ties):
         u = tie.direction
         for body, p, sgn in ((tie.a, tie.p_a, 1.0), (tie.b, tie.p_b, -1.0)):
             r = np.asarray(p, float) / L - c[body]
-            A[3 * body, il + 1 + t] += sgn * u[0]
-            A[3 * body + 1, il + 1 + t] += sgn * u[1]
-            A[3 * body + 2, il + 1 + t] += sgn * (r[0] * u[1] - r[1] * u[0])
+            col = il + 1 + t
+            for row, v in ((3 * body, sgn * u[0]), (3 * body + 1, sgn * u[1]),
+                           (3 * body + 2, sgn * (r[0] * u[1] - r[1] * u[0]))):
+                acc[row, col] = acc.get((row, col), 0.0) + v
     for body in range(nb):
         m = model.mass[body] / W
-        A[3 * body, il] = s * m
+        acc[3 * body, il] = s * m
         rhs[3 * body + 1] = m
-    rows = []
+    A = _sparse(acc, (3 * nb, nv))
+    ub: dict[tuple[int, int], float] = {}
+    n_ub = 0
     for j in range(nj):
         mu = model.mu[j]
         if not math.isfinite(mu):
             continue
         for k in range(2):
             for sv in (1.0, -1.0):
-                row = np.zeros(nv)
-                row[iV(j, k)] = sv
-                row[iN(j, k)] = -mu
-                rows.append(row)
-    A_ub = np.array(rows) if rows else None
-    b_ub = np.zeros(len(rows)) if rows else None
+                ub[n_ub, iV(j, k)] = sv
+                ub[n_ub, iN(j, k)] = -mu
+                n_ub += 1
+    A_ub = _sparse(ub, (n_ub, nv)) if n_ub else None
+    b_ub = np.zeros(n_ub) if n_ub else None
     cost = np.zeros(nv)
     cost[il] = -1.0
     if tension is None:
@@ -432,6 +445,9 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     nj = len(joints)
     if nj < 4:
         raise ArchdemInputError("a four-hinge mechanism needs at least 4 joints")
+    if not getattr(assembly, "is_chain", True):
+        raise ArchdemInputError("the four-hinge enumeration needs the blocks in one chain from the ground to the ground; "
+                                "this assembly is not one (the static LP takes any assembly)")
     L = assembly.length_scale
     corners = np.array([j.contact_points for j in joints]) / L  # (nj, 2 faces, 2)
     normals = np.array([j.normal for j in joints])
@@ -466,8 +482,8 @@ def enumerate_mechanisms(assembly: Assembly, load_sign: int = +1) -> KinematicRe
     jj, ff = J[k], Fc[k]
     hinges = tuple((joints[q].name, FACES[fc]) for q, fc in zip(jj, ff))
     blocks = tuple(_macro_block(assembly.bodies, int(lo[k, i]), int(hi[k, i])) for i in range(3))
-    # a layout of radial cuts describes hinges on the ring only; a pier joint is no radial cut
-    layout = None if any(joints[q].in_pier for q in jj) else FourHingeLayout(
+    # a layout of radial cuts describes hinges on a parametric ring only; a pier joint is no radial cut
+    layout = None if getattr(assembly, "arch", True) is None or any(joints[q].in_pier for q in jj) else FourHingeLayout(
         tuple(Hinge(joints[q].side, float(joints[q].psi), FACES[fc], f) for q, fc in zip(jj, ff)), blocks)
     lam_k = float(lam[k])
     msg = "ok" if lam_k >= 0 else f"the arch cannot stand under self-weight (lambda = {lam_k:.4g} < 0)"

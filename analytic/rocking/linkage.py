@@ -36,7 +36,7 @@ from analytic.limit.limit_continuous import (
 from analytic.limit.limit_discrete import FACES, enumerate_mechanisms, macro_block_of_bodies
 from analytic.limit.two_bar import two_bar_geometry
 from analytic.rocking.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
-from specimens.blocks import discretise
+from specimens.blocks import Assembly, discretise
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
@@ -493,7 +493,11 @@ def governing_four_bar(arch: PointedArch, density: float = 500.0, contact: float
                        **discretise_kw) -> FourBar:
     """The four-bar of the arch's governing mechanism, opened by a positive ground acceleration: the
     continuous ring's minimum, or on ``piers`` the discrete mechanism through them (the assembly cut
-    with ``discretise_kw``)."""
+    with ``discretise_kw``). A drawn assembly (:mod:`specimens.drawn`) in place of ``arch``: its own
+    minimum discrete mechanism."""
+    if isinstance(arch, Assembly):
+        return mechanism_four_bar(discretise(arch, density=density, contact=contact, piers=piers, **discretise_kw),
+                                  direction=1)
     if piers is None:
         return minimised_four_bar(arch, density, direction=1, contact=contact)
 

@@ -15,7 +15,7 @@ def _draw(args: argparse.Namespace) -> int:
     label, asm = assembly_from_args(args)
     out = figure_file(args.out, "--out")
     a = asm.arch
-    save_drawing(asm, out, title=f"{label}   Sh = {a.Sh:.2f}, Sd = {a.Sd:.2f}")
+    save_drawing(asm, out, title=f"{label}   Sh = {a.Sh:.2f}, Sd = {a.Sd:.2f}" if a is not None else label)
     print(f"drawing written to {out}")
     return 0
 

@@ -16,6 +16,7 @@ from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.errors import ArchdemInputError
+from specimens.exchange import UNITS, read_assembly
 from specimens.geometry import PointedArch
 from specimens.io import can_make_dir, check_name, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
 from specimens.io import parse_grid as _parse_grid
@@ -61,11 +62,38 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
     g.add_argument("--density", type=float, default=None,
                    help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g})")
     add_pier_arguments(p)
+    add_geometry_arguments(p)
     p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
                    help="effective contact: every joint touches within its central fraction C of the depth, "
                         "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
                         "(archdem calibrate); masses stay those of the full blocks "
                         f"(default {default_of(discretise, 'contact'):g}: the full joint)")
+
+
+def add_geometry_arguments(p: argparse.ArgumentParser) -> None:
+    """``--geometry FILE --units U --depth D`` (see :func:`specimens.exchange.read_assembly`); ``--density``
+    is the arch's option."""
+    g = p.add_argument_group("a structure from a drawing instead (docs/physics/geometry.md#16-assemblies-from-drawings)")
+    g.add_argument("--geometry", default=None, metavar="FILE",
+                   help="blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl (convex prisms)")
+    g.add_argument("--units", default=None, metavar="U",
+                   help=f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m); "
+                        "with --record, the record's units if its file does not say (g, m/s2, cm/s2, mm/s2)")
+    g.add_argument("--depth", type=float, default=None, metavar="D",
+                   help="out-of-plane depth of the drawn blocks [m] where the drawing does not state it")
+
+
+def geometry_from_args(args: argparse.Namespace):
+    """``(label, DrawnAssembly)`` of ``--geometry`` (the arch and pier options refused beside it)."""
+    given = [f"--{k.replace('_', '-')}" for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs") + PIER_OPTIONS
+             if getattr(args, k, None) is not None]
+    if getattr(args, "id", None) is not None or given:
+        raise ArchdemInputError(f"--geometry gives the whole structure: drop {'the specimen id' if args.id else given[0]}")
+    if args.depth is not None and not (math.isfinite(args.depth) and MIN_LENGTH_M <= args.depth <= MAX_LENGTH_M):
+        raise ArchdemInputError(f"--depth must be a length between {MIN_LENGTH_M:g} and {MAX_LENGTH_M:g} m, got {args.depth:g}")
+    units = args.units if args.units in UNITS else None  # otherwise a record's units (shake)
+    density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
+    return Path(args.geometry).stem, read_assembly(args.geometry, units=units, depth=args.depth, density=density)
 
 
 def add_pier_arguments(p: argparse.ArgumentParser) -> None:
@@ -89,7 +117,10 @@ def add_pier_arguments(p: argparse.ArgumentParser) -> None:
 
 def arch_from_args(args: argparse.Namespace):
     """Return ``(label, PointedArch)`` from the id or the parameter options; the label names the
-    piers too when the ``--pier-*`` options set them."""
+    piers too when the ``--pier-*`` options set them. With ``--geometry``: ``(label, DrawnAssembly)``,
+    which :func:`specimens.blocks.discretise` returns as drawn."""
+    if getattr(args, "geometry", None) is not None:
+        return geometry_from_args(args)
     label, arch = _arch_from_args(args)
     piers = piers_from_args(args)
     if piers is None:
@@ -161,7 +192,8 @@ MAX_VOUSSOIRS = 100
 def block_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
     """``(B, H)`` [m] of ``--block`` (half-width, half-height) when given; refused beside an arch, its
     piers or its contact; with neither a block nor an arch, one line asking for one."""
-    arch_given = args.id is not None or any(getattr(args, k, None) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc"))
+    arch_given = args.id is not None or any(getattr(args, k, None) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc",
+                                                                                        "geometry"))
     if args.block is None:
         if not arch_given:
             raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")

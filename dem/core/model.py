@@ -150,10 +150,11 @@ def from_assembly(assembly, name: str | None = None, base_width_factor: float = 
     """
     arch = assembly.arch
     bodies, joints = _specs(assembly)
-    t = float(arch.t)
+    t = float(assembly.size)  # the ring thickness; a drawn assembly's own length (specimens.drawn)
     base = _base(assembly, t, base_width_factor * max(b.width for b in bodies))
-    crown = next(k for k, b in enumerate(assembly.bodies) if b.name == "C")
-    src = {"kind": "arch", "arch": {k: float(v) for k, v in arch.describe().items()}, **assembly.parameters()}
+    crown = assembly.crown_index
+    src = ({"kind": "arch", "arch": {k: float(v) for k, v in arch.describe().items()}} if arch is not None
+           else {"kind": "drawing"}) | assembly.parameters()
     return Model(name or "arch", bodies, joints, base, t, crown, src, assembly)
 
 

@@ -469,27 +469,44 @@ def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str
     mismatching study on resume), :class:`StudyInterrupted` (a local worker died) and
     ``KeyboardInterrupt``; in each case the finished cases are in the file.
     """
-    path = Path(out_path)
-    cases = list(cases)
-    study_attrs = dict(study_attrs or {})
+    (res,) = run_studies([(cases, out_path, study_attrs, seed, definition)], func, workers, scheduler, resume, progress)
+    return res
+
+
+def run_studies(studies: Sequence[tuple], func: Callable[[dict], dict], workers: int | None = None,
+                scheduler: str | None = None, resume: bool = False, progress: bool = True) -> list[StudyResult]:
+    """Several studies of one case function, each ``(cases, out_path, study_attrs, seed[, definition])`` and stored in
+    its own file as :func:`run_study` stores one, run by one pool of workers: its processes start once
+    and no core waits for the end of one study before the next begins. Returns one result per study."""
     func_name = function_name(func)  # fail early, in the main process
-    keys = [case_key(c) for c in cases]
-    if len(set(keys)) != len(keys):
-        dup = next(c for c, k in zip(cases, keys) if keys.count(k) > 1)
-        raise ArchdemInputError(f"duplicate case in the study: {canonical_json(dup)}")
+    plan = []
+    for cases, out_path, study_attrs, seed, *definition in studies:
+        cases = list(cases)
+        keys = [case_key(c) for c in cases]
+        if len(set(keys)) != len(keys):
+            dup = next(c for c, k in zip(cases, keys) if keys.count(k) > 1)
+            raise ArchdemInputError(f"duplicate case in the study: {canonical_json(dup)}")
+        plan.append((Path(out_path), cases, keys, dict(study_attrs or {}), seed, definition[0] if definition else None))
+    if len({p for p, *_ in plan}) != len(plan):
+        raise ArchdemInputError("two studies of one run share a file")
     if workers is not None and (int(workers) != workers or workers < 1):
         raise ArchdemInputError(f"workers must be a positive integer, got {workers!r}")
     if scheduler:
         check_scheduler(scheduler)  # before the study file is made: a refused address leaves nothing behind
-    if path.is_dir():
-        raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
-    writable_dir(path.parent)
-    with exclusive(lock_path(path), f"the study file {path}", remove=True):
-        done = _open_study(path, func_name, study_attrs, seed, resume, definition)
-        todo = [(k, c) for k, c in zip(keys, cases) if k not in done]
+    for path, *_ in plan:
+        if path.is_dir():
+            raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
+        writable_dir(path.parent)
+    with contextlib.ExitStack() as locks:
+        for path, *_ in plan:  # every file is ours before any is made
+            locks.enter_context(exclusive(lock_path(path), f"the study file {path}", remove=True))
+        todo = []
+        for path, cases, keys, study_attrs, seed, definition in plan:
+            done = _open_study(path, func_name, study_attrs, seed, resume, definition)
+            todo += [(k, c, path) for k, c in zip(keys, cases) if k not in done]
         if todo:
-            _execute(todo, func, path, workers, scheduler, progress)
-    return load_study(path, cases)
+            _execute(todo, func, workers, scheduler, progress)
+    return [load_study(path, cases) for path, cases, *_ in plan]
 
 
 def lock_path(study: str | os.PathLike) -> Path:
@@ -498,7 +515,7 @@ def lock_path(study: str | os.PathLike) -> Path:
     return study.with_name(f".{study.name}.lock")
 
 
-def _execute(todo, func, path, workers, scheduler, progress) -> None:
+def _execute(todo, func, workers, scheduler, progress) -> None:
 
     pool = _DaskPool(scheduler) if scheduler else _LocalPool(min(int(workers or os.cpu_count() or 1), len(todo)))
     bar = tqdm(total=len(todo), desc="cases", unit="case", file=sys.stderr, dynamic_ncols=True,
@@ -506,11 +523,12 @@ def _execute(todo, func, path, workers, scheduler, progress) -> None:
     n_ok = n_failed = 0
     written: set = set()
     futures: dict = {}
+    path = " and ".join(dict.fromkeys(str(p) for *_, p in todo))  # where the finished cases are, for the messages
 
     def store(fut, out) -> None:
         nonlocal n_ok, n_failed
-        key, case = futures[fut]
-        rec = _write_case(path, key, case, out)
+        key, case, where = futures[fut]
+        rec = _write_case(where, key, case, out)
         written.add(fut)
         if rec.ok:
             n_ok += 1
@@ -523,8 +541,8 @@ def _execute(todo, func, path, workers, scheduler, progress) -> None:
 
     cancel = True
     try:
-        for key, case in todo:
-            futures[pool.submit(_run_case, func, case)] = (key, case)
+        for key, case, where in todo:
+            futures[pool.submit(_run_case, func, case)] = (key, case, where)
         for fut in pool.as_completed(list(futures)):
             try:
                 out = fut.result()

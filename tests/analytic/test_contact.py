@@ -18,6 +18,7 @@ from specimens.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("sid", ["Sh02-Sd020", "Sh06-Sd010", "Sh1-Sd025"])
+@pytest.mark.slow
 def test_lambda_falls_with_contact_and_continuous_meets_fine_discrete(sid):
     arch = get_specimen(sid).arch
     lams = []

@@ -40,6 +40,7 @@ def test_frame_four_bar_is_the_closed_form_rocking_frame(beam_density):
 
 
 @pytest.mark.parametrize("freq", [1.0, 2.0, 4.0])
+@pytest.mark.slow
 def test_frame_overturning_amplitude_matches_the_equivalent_block(freq):
     """One-cycle sine: the four-bar of the frame's discrete mechanism and the closed-form frame (a
     block of the same slenderness, R (1 + 3 gamma)/(1 + 2 gamma), with the frame's restitution)

@@ -3,7 +3,11 @@ and its study resumes with nothing lost or repeated."""
 import subprocess
 import sys
 
+import pytest
+
 from tests.kill import kill_once_stored, outlived, stored_ok
+
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
 
 
 def test_a_sigkilled_map_leaves_no_worker_and_resumes(tmp_path):

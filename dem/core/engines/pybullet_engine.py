@@ -32,6 +32,7 @@ docs/decisions/006-solver-settings.md):
 """
 from __future__ import annotations
 
+import ctypes
 import math
 import os
 import shutil
@@ -40,8 +41,6 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-import pybullet as pb
-from pybullet_utils.bullet_client import BulletClient
 from scipy.spatial.transform import Rotation
 
 from dem.core.contact import body_point_stiffness, hull_offset, normal_stiffness, rayleigh_beta
@@ -154,19 +153,39 @@ def _write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
-def _quiet(fn):
-    """Call ``fn`` with the process's C-level stdout sent to /dev/null (pybullet prints
-    ``argv[0]=`` on every connection, which would corrupt JSON output)."""
+def _quiet(fn, fds: tuple[int, ...] = (1,)):
+    """Call ``fn`` with the process's C-level ``fds`` (default stdout) sent to /dev/null (pybullet
+    prints ``argv[0]=`` on every connection, which would corrupt JSON output)."""
     sys.stdout.flush()
-    saved = os.dup(1)
+    sys.stderr.flush()
+    saved = [os.dup(fd) for fd in fds]
     devnull = os.open(os.devnull, os.O_WRONLY)
     try:
-        os.dup2(devnull, 1)
+        for fd in fds:
+            os.dup2(devnull, fd)
         return fn()
     finally:
-        os.dup2(saved, 1)
-        os.close(saved)
+        try:  # C stdio may still hold the text in its buffer: out to /dev/null before the fds come back
+            ctypes.CDLL(None).fflush(None)
+        except (OSError, AttributeError):  # pragma: no cover - no C library to ask
+            pass
+        for fd, s in zip(fds, saved):
+            os.dup2(s, fd)
+            os.close(s)
         os.close(devnull)
+
+
+def _import_pybullet():
+    """``pybullet`` and its ``BulletClient``, imported without the "pybullet build time" banner its
+    import writes to stderr (a campaign's workers would print it dozens of times)."""
+    def load():
+        # deferred: imported with the banner silenced, here and nowhere else
+        import pybullet as pb
+        from pybullet_utils.bullet_client import BulletClient
+
+        return pb, BulletClient
+
+    return _quiet(load, fds=(1, 2))
 
 
 class PyBulletEngine(Engine):
@@ -178,6 +197,7 @@ class PyBulletEngine(Engine):
 
     # -- construction ---------------------------------------------------------------------
     def build(self, model: Model, settings: Settings, driven_base: bool = False) -> None:
+        pb, BulletClient = _import_pybullet()
         if self._p is not None:
             raise RuntimeError("engine already built")
         self._pb = pb

@@ -22,6 +22,7 @@ from dem.core.ties import tie_spec
 from dem.experiments.record.run import RecordRun, dem_verdict, run_records
 from specimens.blocks import DEFAULT_DENSITY, Assembly, discretise
 from specimens.catalogue import Specimen, get_specimen
+from specimens.drawn import DrawnAssembly
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.monuments import MONUMENTS, Monument
@@ -116,7 +117,7 @@ class ArchAssessment:
 
 def _structure(target, configuration: str | None):
     """``(label, arch, density, piers, default site)`` of a monument (name or :class:`Monument`) or an
-    arch (catalogue id, Specimen, PointedArch)."""
+    arch (catalogue id, Specimen, PointedArch, or a drawn assembly, :mod:`specimens.drawn`)."""
     monument = MONUMENTS.get(target) if isinstance(target, str) else target if isinstance(target, Monument) else None
     if monument is None:
         if configuration is not None:
@@ -126,7 +127,10 @@ def _structure(target, configuration: str | None):
             return spec.id, spec.arch, None, None, None
         if isinstance(spec, PointedArch):
             return "arch", spec, None, None, None
-        raise ArchdemInputError(f"expected a monument, specimen id, Specimen or PointedArch, got {type(target).__name__}")
+        if isinstance(spec, DrawnAssembly):  # its own discrete governing mechanism (governing_four_bar)
+            return spec.source.get("file", "drawing"), spec, None, None, None
+        raise ArchdemInputError(f"expected a monument, specimen id, Specimen, PointedArch or drawn assembly, "
+                                f"got {type(target).__name__}")
     name = configuration if configuration is not None else next(iter(monument.configurations))
     if name not in monument.configurations:
         raise ArchdemInputError(f"{monument.name} has the configurations {', '.join(monument.configurations)}, "
@@ -149,7 +153,7 @@ def assess_with_records(target, records=(), site=None, *, configuration: str | N
     ``target``: a monument (``"noh-gumbad"``: its ring as reconstructed, the piers of ``configuration``
     (default the first, "ring alone"), its density, by default its site, and the least mechanism of
     the fine cut as in :func:`analytic.codes.assessment.assess_monument`) or an arch (catalogue id,
-    ``Specimen`` or ``PointedArch``; ``site`` needed). ``density`` [kg/m^3], ``contact`` (the joints'
+    ``Specimen``, ``PointedArch`` or a drawn assembly, :func:`specimens.read_assembly`; ``site`` needed). ``density`` [kg/m^3], ``contact`` (the joints'
     contact fraction), ``piers`` and ``n_voussoirs``: the blocks, as :func:`specimens.blocks.discretise`.
     ``sld_site``: the SLD hazard, its activation check beside a life-safety one (:func:`analytic.codes.assessment.assess`).
 

@@ -35,6 +35,7 @@ from dem.experiments.fragility.run import (
     Perturbation,
     arch_structure,
     block_structure,
+    drawing_structure,
     fragility,
     make_cases,
     prepared_record,
@@ -62,6 +63,10 @@ def _structure(args: argparse.Namespace):
     kw = discretisation_kwargs(args, arch)
     require_standing(label, arch, **kw)
     asm = discretise(arch, config=args.config, **kw)
+    if asm.arch is None:  # a drawing (--geometry): its joints' edge loss is the perturbation's, not --contact
+        if asm.contact != 1.0:
+            raise ArchdemInputError("a drawing's fragility takes its joints' contact from --edge-loss, not --contact")
+        return label, drawing_structure(asm), from_assembly(asm, name=label)
     return label, arch_structure(arch, args.config, kw.get("n_voussoirs"), asm.contact, kw.get("piers"),
                                  kw.get("density")), from_assembly(asm, name=label)
 

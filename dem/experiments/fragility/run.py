@@ -32,7 +32,8 @@ from dem.experiments.tilt.case import arch_from_params, arch_params
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
-from specimens.imperfection import Imperfection
+from specimens.drawn import from_dict as drawn_from_dict
+from specimens.imperfection import Imperfection, realise_drawn
 from specimens.piers import Piers
 
 STUDY_KIND = "fragility"
@@ -78,6 +79,11 @@ def arch_structure(arch, config: str = "glued", n_voussoirs: int | None = None, 
             "density": float(density or DEFAULT_DENSITY), **({} if piers is None else {"piers": piers.describe()})}
 
 
+def drawing_structure(assembly) -> dict:
+    """The structure entry of a case: a drawn assembly (:mod:`specimens.drawn`), carried whole."""
+    return {"kind": "drawing", "assembly": assembly.to_dict()}
+
+
 def block_structure(b: float, h: float, width: float = 0.1, density: float = 500.0) -> dict:
     """The structure entry of a case: a rectangular block ``b`` x ``h`` [m] on a flat base."""
     return {"kind": "block", "b": float(b), "h": float(h), "width": float(width), "density": float(density)}
@@ -88,6 +94,9 @@ def _model(structure: dict, pert: dict, seed: int, k: int):
         rng = np.random.default_rng([int(seed), int(k), 2])
         db, dh = rng.normal(0.0, pert["size_sd"], 2) if pert["size_sd"] > 0 else (0.0, 0.0)
         return single_block(structure["b"] + db, structure["h"] + dh, structure["width"], structure["density"])
+    if structure["kind"] == "drawing":
+        imp = Imperfection(pert["edge_loss"], pert["edge_loss_sd"])
+        return from_assembly(realise_drawn(drawn_from_dict(structure["assembly"]), imp, seed, k))
 
     arch = arch_from_params(structure["arch"])
     kw = dict(n_voussoirs=structure["n_voussoirs"], config=structure["config"], density=structure["density"],

@@ -38,7 +38,7 @@ def _positive(name: str, v: float | None) -> None:
 def model_and_settings(args: argparse.Namespace):
     """``(label, arch, assembly, model, settings)`` of the options."""
     label, arch = arch_from_args(args)
-    if args.id is None and args.Ri is None and args.Sh is None:
+    if args.id is None and args.Ri is None and args.Sh is None and args.geometry is None:
         raise ArchdemInputError("give a specimen id or the arch parameters")
     _positive("--mu-joint", args.mu_joint)
     _positive("--mu-base", args.mu_base)
@@ -134,7 +134,6 @@ def register(sub) -> None:
                    help=f"one-cycle sine pulse of FREQ [Hz], up to {MAX_SINE_HZ:g}")
     p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help=f"sine amplitude [g], up to {MAX_AMPLITUDE_G:g}")
     p.add_argument("--record", default=None, metavar="FILE", help="accelerogram (.AT2, .smc, ESM ASCII, CSV)")
-    p.add_argument("--units", default=None, help="record units if the file does not say (g, m/s2, cm/s2, mm/s2)")
     p.add_argument("--scale", type=float, default=None, help="record scale factor")
     p.add_argument("--pga", type=float, default=None, metavar="A_G", help="scale the record to this PGA [g]")
     p.add_argument("--baseline", action="store_true", help="baseline-correct the record (linear velocity fit)")

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from dem.experiments.tilt.case import DEM_CASE, make_case
-from dem.studies.sweep import case_key, run_study
+from dem.studies.sweep import case_key, run_studies
 from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
 
@@ -66,12 +66,33 @@ def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: s
     """``n`` tilt tests of ``arch`` (``n_voussoirs`` per side) with the joints of realisations
     ``0..n-1`` of ``seed`` (``law``: their contact-law settings, ``dem.core.contact.study_joints``; rigid
     by default); the study is stored in ``out_path``."""
+    study = ensemble_study(label, arch, imperfection, n, seed, out_path, config, mu_joint, mu_base, engine,
+                           n_voussoirs, law)
+    (res,) = tilt_ensembles([study], workers, scheduler, resume, progress)
+    return res
 
+
+@dataclass(frozen=True)
+class EnsembleStudy:
+    """The cases of an ensemble, to be run (:func:`tilt_ensembles`) into ``out_path``."""
+
+    label: str
+    contact: float
+    edge_loss_sd: float  # [m]
+    seed: int
+    cases: tuple
+    attrs: dict
+    out_path: str
+
+
+def ensemble_study(label: str, arch, imperfection, n: int, seed: int, out_path: str | os.PathLike,
+                   config: str = "glued", mu_joint: float = 0.577, mu_base: float = 1.0, engine: str = "pybullet",
+                   n_voussoirs: int = 8, law: dict | None = None) -> EnsembleStudy:
+    """The study of :func:`tilt_ensemble` (its arguments), not run."""
     if not (isinstance(n, int) and 1 <= n <= 10_000):
         raise ArchdemInputError(f"an ensemble has 1 to 10000 realisations, got {n!r}")
     if not (isinstance(seed, int) and 0 <= seed < 2**63):
         raise ArchdemInputError(f"the seed must be an integer >= 0, got {seed!r}")
-    t0 = time.perf_counter()
     nominal = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=imperfection.contact(arch))
     settings = ({} if engine == "pybullet" else {"engine": engine}) | (law or {}) or None
     base = make_case(label, arch, config, mu_joint, mu_base, ENSEMBLE_PROTOCOL, settings, n_voussoirs,
@@ -84,20 +105,33 @@ def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: s
     attrs = {"study": STUDY_KIND, "label": label, "config": config, "contact": nominal.contact,
              "edge_loss_mm": imperfection.edge_loss * 1e3, "edge_loss_sd_mm": imperfection.edge_loss_sd * 1e3,
              "seed": int(seed), "n": n}
-    res = run_study(cases, DEM_CASE, out_path, workers=workers, scheduler=scheduler, resume=resume,
-                    progress=progress, study_attrs=attrs, seed=int(seed))
-    by_key = res.by_key
-    lams, modes, seeds, failed = [], [], [], []
-    for c in cases:
-        rec = by_key.get(case_key(c))
-        if rec is not None and rec.ok:
-            lams.append(float(rec.results["lambda"]))
-            modes.append(str(rec.results["mode"]))
-            seeds.append((int(seed), c["realisation"]))
-        else:
-            failed.append(f"realisation {c['realisation']}: {rec.error if rec is not None else 'not run'}")
-    return EnsembleResult(label, nominal.contact, imperfection.edge_loss_sd, np.array(lams), tuple(modes),
-                          tuple(seeds), tuple(failed), str(out_path), time.perf_counter() - t0)
+    return EnsembleStudy(label, nominal.contact, imperfection.edge_loss_sd, int(seed), tuple(cases), attrs,
+                         str(out_path))
 
 
-__all__ = ["tilt_ensemble", "EnsembleResult", "ENSEMBLE_PROTOCOL"]
+def tilt_ensembles(studies: list[EnsembleStudy], workers: int | None = None, scheduler: str | None = None,
+                   resume: bool = False, progress: bool = True) -> list[EnsembleResult]:
+    """Run ensembles (:func:`ensemble_study`) on one pool of workers, each into its own study file
+    (:func:`dem.studies.sweep.run_studies`); their results in order (``wall_s``: of them all)."""
+    t0 = time.perf_counter()
+    done = run_studies([(st.cases, st.out_path, st.attrs, st.seed) for st in studies], DEM_CASE, workers=workers,
+                       scheduler=scheduler, resume=resume, progress=progress)
+    wall = time.perf_counter() - t0
+    out = []
+    for st, res in zip(studies, done):
+        by_key = res.by_key
+        lams, modes, seeds, failed = [], [], [], []
+        for c in st.cases:
+            rec = by_key.get(case_key(c))
+            if rec is not None and rec.ok:
+                lams.append(float(rec.results["lambda"]))
+                modes.append(str(rec.results["mode"]))
+                seeds.append((st.seed, c["realisation"]))
+            else:
+                failed.append(f"realisation {c['realisation']}: {rec.error if rec is not None else 'not run'}")
+        out.append(EnsembleResult(st.label, st.contact, st.edge_loss_sd, np.array(lams), tuple(modes), tuple(seeds),
+                                  tuple(failed), st.out_path, wall))
+    return out
+
+
+__all__ = ["tilt_ensemble", "tilt_ensembles", "ensemble_study", "EnsembleStudy", "EnsembleResult", "ENSEMBLE_PROTOCOL"]

@@ -12,7 +12,7 @@ from matplotlib.figure import Figure
 
 from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
-from dem.experiments.tilt.ensemble import tilt_ensemble
+from dem.experiments.tilt.ensemble import ensemble_study, tilt_ensembles
 from specimens.imperfection import Imperfection
 
 #: Seed of the campaign's realisations (each specimen's ensemble is realisations 0..n-1 of it).
@@ -46,12 +46,13 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
     tested, predicted, n = lab_plan(ctx)
     dem_ideal = _tilt_reference(ctx)
     rows = []
-    for s in tested + predicted:
+    # every ensemble on one pool of workers: they start once, and no core waits for the end of one specimen
+    studies = [ensemble_study(s.id, s.arch, Imperfection(cal.edge_loss, cal.edge_loss_sd if s.id in lab else 0.0),
+                              n if s.id in lab else 1, LAB_SEED, studies_dir(ctx) / f"lab-{s.id}.h5", config=ctx.config,
+                              engine=ctx.engine, law=ctx.law_of(s)) for s in tested + predicted]
+    ensembles = tilt_ensembles(studies, workers=ctx.workers, scheduler=ctx.scheduler, resume=True, progress=False)
+    for s, ens in zip(tested + predicted, ensembles):
         t = lab.get(s.id)
-        imp = Imperfection(cal.edge_loss, cal.edge_loss_sd if t else 0.0)
-        ens = tilt_ensemble(s.id, s.arch, imp, n if t else 1, LAB_SEED, studies_dir(ctx) / f"lab-{s.id}.h5",
-                            config=ctx.config, engine=ctx.engine, workers=ctx.workers, scheduler=ctx.scheduler,
-                            resume=True, progress=False, law=ctx.law_of(s))
         modes = Counter(ens.modes)
         mode = modes.most_common(1)[0][0] if modes else "failed"
         row = {

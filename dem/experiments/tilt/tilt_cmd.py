@@ -34,7 +34,7 @@ def _run(args: argparse.Namespace) -> int:
     from dem.experiments.tilt.file import save_result
 
     label, arch = arch_from_args(args)
-    if args.id is None and args.Ri is None and args.Sh is None:
+    if args.id is None and args.Ri is None and args.Sh is None and args.geometry is None:
         raise ArchdemInputError("give a specimen id or the arch parameters")
     for name in ("mu_joint", "mu_base"):
         v = getattr(args, name)

@@ -40,6 +40,7 @@ def thin_arch():
     return asm, solve_lp(asm, math.inf, math.inf).lam
 
 
+@pytest.mark.slow
 def test_stiff_joints_give_the_rigid_limit_load_and_the_drop_goes_as_the_compliance(thin_arch):
     """lambda tends to the LP's with no sliding as k_n grows, its shortfall proportional to 1 / k_n."""
     asm, lp = thin_arch
@@ -48,6 +49,7 @@ def test_stiff_joints_give_the_rigid_limit_load_and_the_drop_goes_as_the_complia
     assert drops[4.3e8] / drops[4.3e9] == pytest.approx(10.0, rel=0.1)
 
 
+@pytest.mark.slow
 def test_the_shear_stiffness_hardly_matters(thin_arch):
     asm, _ = thin_arch
     a, b = (elastic_tilt(asm, 4.3e8, ks).lam for ks in (0.347 * 4.3e8, 4.3e11))

@@ -21,6 +21,7 @@ from specimens.errors import ArchdemInputError
 IDS = ("Sh02-Sd020", "Sh06-Sd010", "Sh1-Sd015")
 
 
+@pytest.mark.slow
 def test_the_fit_recovers_a_planted_edge_loss_and_predicts_left_out_specimens():
     """Laboratory means made by the model itself at 4 mm: the fit and every leave-one-out fit find 4 mm."""
     d = 0.004

@@ -41,6 +41,7 @@ def test_closed_form_sections_match_quadrature():
     assert ring.cumulative(np.array(ring.U))[0] == pytest.approx(arch.area(), rel=1e-12)
 
 
+@pytest.mark.slow
 def test_continuous_not_above_discrete(results):
     for s in CATALOGUE:
         for cfg in ("free", "glued"):
@@ -60,6 +61,7 @@ def test_objective_at_discrete_hinges_reproduces_enumeration():
         assert lambda_of_hinges(arch, kin.layout.hinges) == pytest.approx(kin.lam, rel=1e-4)
 
 
+@pytest.mark.slow
 def test_lambda_grows_with_thickness(results):
     for sh in ("Sh02", "Sh06", "Sh1"):
         lams = [results[s.id].lam for s in CATALOGUE if s.id.startswith(sh + "-")]
@@ -73,6 +75,7 @@ def test_lambda_grows_with_thickness(results):
     assert a20.Rp == pytest.approx(a25.Rp, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_symmetry_and_result_fields(results):
     arch = get_specimen("Sh1-Sd010").arch
     r = results["Sh1-Sd010"]
@@ -89,6 +92,7 @@ def test_symmetry_and_result_fields(results):
         assert np.allclose(a.centroid, b.centroid, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_round_arch_minimum_thickness():
     """Milankovitch / Heyman: the semicircle with radial joints stands under self-weight down to
     t/R = 0.1075 (R = mean radius); lambda(t) = 0 there."""

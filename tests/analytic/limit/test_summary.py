@@ -1,11 +1,13 @@
 """The multiplier series of the figures and the campaign: computed on a process pool, equal to
 the serial computation and in the order given."""
 import numpy as np
+import pytest
 
 from analytic.limit.summary import _series_row, multiplier_series
 from specimens.catalogue import get_specimen
 
 
+@pytest.mark.slow
 def test_parallel_series_equals_serial():
     specs = [get_specimen("Sh06-Sd015"), get_specimen("Sh1-Sd025")]
     par = multiplier_series(specs)
@@ -17,6 +19,7 @@ def test_parallel_series_equals_serial():
         assert np.array_equal(np.asarray(a["polar"]), np.asarray(b["polar"]))
 
 
+@pytest.mark.slow
 def test_analyse_with_the_series_continuous_result_equals_solving_it():
     """The campaign hands each specimen's series result to ``analyse`` instead of solving the
     profile twice: the answer must be the one ``analyse`` computes itself."""

@@ -17,6 +17,7 @@ def fb():
     return arch_four_bar(arch, oppenheim_hinges(arch))
 
 
+@pytest.mark.slow
 def test_boundary_converges_when_tolerance_halved(fb):
     a0 = abs(fb.onset)
     prev = None
@@ -57,6 +58,7 @@ def test_regression_pin_temporary_recovery_is_reported(fb):
     assert not simulate(fb, make_input("sine", (inner.lo * inner.hi) ** 0.5, 3.5, a0), record=False).collapsed
 
 
+@pytest.mark.slow
 def test_parallel_equals_serial(fb):
     xs = [1.5, 3.0, 6.0]
     d1 = failure_domain(fb, "sine", xs, a_max_ratio=5, n_scan=10, tol=1e-2, workers=1)

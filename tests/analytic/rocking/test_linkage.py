@@ -144,6 +144,7 @@ def test_layout_parsing():
         assert hh.polar_about_origin(arch) == pytest.approx(beta, abs=1e-12)  # the profile point seen at beta
 
 
+@pytest.mark.slow
 def test_minimised_layout_keeps_its_cuts():
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.rocking.linkage import minimised_four_bar, minimised_layout

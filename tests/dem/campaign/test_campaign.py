@@ -119,6 +119,7 @@ def test_a_step_recorded_done_with_missing_files_is_run_again(tmp_path):
         "[catalogue] already done (specimen catalogue, drawings and meshes); kept"]
 
 
+@pytest.mark.slow
 def test_a_sigkilled_campaign_leaves_no_worker_and_resumes(tmp_path):
     """A real `archdem campaign` SIGKILLed in its tilt step once a case is stored: no worker
     survives it, and the same command then finishes the step without re-running stored cases."""

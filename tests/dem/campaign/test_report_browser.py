@@ -15,6 +15,8 @@ from dem.campaign.runner import run_campaign
 from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 BROWSER = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
 
 _PROBE = """<script>

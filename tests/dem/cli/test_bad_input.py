@@ -281,3 +281,30 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
         assert np.all(np.isfinite(b.centroid)) and all(np.all(np.isfinite(q)) for q in b.pieces)
     if asm.piers is not None:  # the piers carry the whole springing joint and stand on the ground
         assert asm.piers.width >= a.t * (1 - 1e-9) and [j.name for j in asm.joints if j.is_base] == ["LP0", "RP0"]
+
+
+def _outcome(options: dict) -> str:
+    """"built" or "refused": the arch options through the command's parser, as the property above runs them."""
+    import argparse
+
+    from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
+    from specimens.blocks import discretise
+    from specimens.errors import ArchdemInputError
+
+    p = argparse.ArgumentParser()
+    add_arch_arguments(p)
+    try:
+        _, a = arch_from_args(p.parse_args([f"--{k}={v!r}" for k, v in options.items()]))
+        discretise(a, **discretisation_kwargs(p.parse_args([]), a))
+    except ArchdemInputError:
+        return "refused"
+    return "built"
+
+
+def test_the_generated_arch_options_build_arches_and_refuse_others():
+    """The property above is not vacuous: its strategy yields options that build an arch and options that are refused."""
+    from hypothesis import Phase, find
+
+    quick = settings(phases=[Phase.generate], database=None)  # the first one found, not shrunk
+    assert _outcome(find(_ARCH, lambda a: _outcome(a) == "built", settings=quick)) == "built"
+    assert _outcome(find(_ARCH, lambda a: _outcome(a) == "refused", settings=quick)) == "refused"

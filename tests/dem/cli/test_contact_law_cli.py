@@ -49,6 +49,7 @@ def test_a_shake_on_the_studys_joints_stores_them(tmp_path, capsys):
     assert (st.contact_law, st.kn, st.damping_beta) == ("compliant", pytest.approx(4.34e8), pytest.approx(2.61e-3))
 
 
+@pytest.mark.slow
 def test_a_campaign_on_the_studys_joints(tmp_path):
     """The campaign's tilt step on Table 5.1's joints: the law in the parameters, lambda within 3 % of the LP."""
     import csv
@@ -62,6 +63,7 @@ def test_a_campaign_on_the_studys_joints(tmp_path):
     assert abs(float(row["err_reference_vs_lp_pct"])) < 3.0
 
 
+@pytest.mark.slow
 def test_the_campaigns_other_simulator_steps_on_the_studys_joints(tmp_path):
     """Lab, map and piers run on the campaign's joints too: every case of their studies stores the law, their
     summaries name it, and the arch on piers keeps within 3 % of the LP at every height."""
@@ -78,4 +80,6 @@ def test_the_campaigns_other_simulator_steps_on_the_studys_joints(tmp_path):
     steps = json.loads((tmp_path / "campaign.json").read_text())["steps"]
     assert all(steps[s]["outputs"]["summary"].startswith("Compliant joints") for s in ("lab", "map", "piers"))
     with open(tmp_path / "piers" / "piers.csv", newline="") as fh:
-        assert all(abs(float(r["err_dem_vs_lp_pct"])) < 3.0 for r in csv.DictReader(fh))
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == 4  # the quick study's bare arch and three pier heights: all() of no row would pass
+    assert all(abs(float(r["err_dem_vs_lp_pct"])) < 3.0 for r in rows)

@@ -46,6 +46,7 @@ def test_base_follows_prescribed_displacement(arch, engine):
 
 
 @pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.slow
 def test_below_rocking_onset_the_arch_moves_with_the_base(arch, engine):
     # 0.3 g at 4 Hz is below this arch's static onset (lambda 0.35): the arch must ride on the base.
     # The ground moves ~5 mm (a / omega^2), so an arch left behind by a base that does not drag it

@@ -41,6 +41,7 @@ def _pair_model(bL, bR, h, span):
     return pair, Model("pair", bodies, joints, _base(pair, 0.1, 2 * max(b.width for b in bodies)), 2 * h, 1)
 
 
+@pytest.mark.slow  # four tilt tests
 @pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
 @pytest.mark.parametrize("T", [1.0, 5.0])
 def test_a_pair_of_piers_with_a_tie_tilts_at_the_closed_form(engine, T):

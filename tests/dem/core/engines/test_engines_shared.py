@@ -20,7 +20,8 @@ from specimens.catalogue import get_specimen
 B, H = 0.1, 0.2  # b/h = 0.5
 
 
-ENGINES = [pytest.param(e, marks=pytest.mark.skipif(not engine_installed(e), reason=f"{e} is not installed"))
+ENGINES = [pytest.param(e, marks=[pytest.mark.skipif(not engine_installed(e), reason=f"{e} is not installed")]
+                        + ([pytest.mark.slow] if e == "lmgc90" else []))  # a worker process per simulation
            for e in available_engines()]
 
 
@@ -33,6 +34,7 @@ def test_every_engine_is_covered():
     assert {"pybullet", "mujoco", "lmgc90"} <= set(available_engines())
 
 
+@pytest.mark.slow
 def test_block_slides_at_mu(engine):
     # mu < b/h: the block slides at lambda = mu (Coulomb); 2 % = the tolerance
     mu = 0.3
@@ -55,6 +57,7 @@ def test_block_rocks_at_b_over_h(engine):
 # representative subset: the thin pointed arch free (its crown joints are nearest to the friction
 # limit) and the thickest glued one; all 22 cases run in benchmarks/validate_dem.py
 @pytest.mark.parametrize("sid,config", [("Sh06-Sd010", "free"), ("Sh1-Sd025", "glued")])
+@pytest.mark.slow
 def test_rest_drift(engine, sid, config):
     m = from_assembly(discretise(get_specimen(sid).arch, config=config))
     r = simulate(m, Settings(engine=engine), Rest(), 5.0, record_every=0.1, stop_on_collapse=False,

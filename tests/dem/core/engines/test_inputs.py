@@ -67,6 +67,7 @@ def _ulp_up(x):
     return np.where(a != 0, np.nextafter(a, np.inf), a)
 
 
+@pytest.mark.slow
 def test_last_bit_changes_of_the_model_do_not_reach_the_engine():
     # The mechanism itself, on any CPU: every vertex, centroid, inertia and mass of the model and
     # the tilt level moved by one unit in the last place give bit-identical poses. Without the
@@ -134,6 +135,7 @@ def _other_machine() -> dict:
     return {"NPY_DISABLE_CPU_FEATURES": " ".join(feats), "OPENBLAS_CORETYPE": "Prescott"}
 
 
+@pytest.mark.slow
 def test_same_poses_without_the_vector_extensions():
     # The end-to-end case on a real CPU difference. Without dem.core.engines.inputs this fails on an
     # AVX-512 machine (measured: different bits; the tilt lambda of this specimen, no sliding,

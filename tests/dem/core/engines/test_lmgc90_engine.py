@@ -132,6 +132,7 @@ def test_each_simulation_runs_in_its_own_worker_process():
     assert e1._proc is None and e2._proc is None
 
 
+@pytest.mark.slow  # 2 s of LMGC90
 def test_glued_arch_stands_at_rest():
     # the glued crown (built as its hull) with the joints' friction everywhere
     m = from_assembly(discretise(get_specimen("Sh06-Sd015").arch, config="glued"))
@@ -143,6 +144,7 @@ def test_glued_arch_stands_at_rest():
 # The single block of docs/validation.md#3-single-block (0.1 m x 0.4 m, b/h = 0.25, no sliding), in 3-D (LMGC90
 # has no planar option; measured out-of-plane drift <= 2e-5 m): every run 2 % above the rocking-block amplitude
 # collapses, every run 2 % below survives (measured at dt 0.5 ms: all six as asserted)
+@pytest.mark.slow  # six LMGC90 shakes
 @pytest.mark.parametrize("freq", [2.0, 3.0, 5.0])
 def test_block_overturning_amplitude_matches_rocking_block_model(freq):
     from analytic.rocking.domain import failure_domain

@@ -109,6 +109,7 @@ import analytic.limit.limit_discrete as lim  # noqa: E402 (the LP the MuJoCo tes
 # sharp arch glued (measured -0.4 % and -0.07 %); Sh02-Sd020 glued runs in test_compare_engines.py
 # and all 11 glued specimens in `archdem compare-engines` (max |error| 0.46 %)
 @pytest.mark.parametrize("sid,config", [("Sh06-Sd010", "free"), ("Sh1-Sd025", "glued")])
+@pytest.mark.slow
 def test_no_sliding_lambda_and_hinges_match_lp(sid, config):
     asm = discretise(get_specimen(sid).arch, config=config)
     m = from_assembly(asm, name=sid)

@@ -52,3 +52,17 @@ def test_the_mesh_folder_of_a_killed_run_is_removed_by_the_next_one(tmp_path, mo
     assert not left.exists() and mine.is_dir() and mine.parent == tmp_path
     other = mesh_dir()  # a live process's folder (this one's) is kept
     assert mine.is_dir() and other.is_dir()
+
+
+def test_building_an_engine_prints_nothing():
+    # pybullet writes a "build time" banner to stderr at import and argv[0] on connection: a
+    # campaign's workers would print them between its progress lines
+    import subprocess
+    import sys
+
+    code = ("from dem.core.engines import get_engine\nfrom dem.core.model import as_model\n"
+            "from dem.core.settings import Settings\ne = get_engine('pybullet')\n"
+            "e.build(as_model('Sh06-Sd015'), Settings())\ne.close()\nprint('built')\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout == "built\n" and out.stderr == ""

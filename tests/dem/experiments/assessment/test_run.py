@@ -20,6 +20,7 @@ def _json(capsys, argv):
     return json.loads(capsys.readouterr().out)
 
 
+@pytest.mark.slow  # records shaken on the DEM
 def test_an_arch_with_records_as_the_command_line(short_records, capsys):
     d = _json(capsys, ["assess", "Sh06-Sd015", "--spectrum", "ec8", "--ag", "0.1", "--records", *short_records,
                        "--workers", "1", "--json"])

@@ -31,6 +31,7 @@ def test_row_arithmetic_and_summary():
     assert math.isnan(_row("none", 0.5, {"mujoco": 0.5}).rel_diff)
 
 
+@pytest.mark.slow
 def test_compare_specimen_no_sliding_mujoco_against_lp():
     # a real row: MuJoCo at no sliding within 1 % of the exact LP (measured -0.3 %), same hinges
     (row,) = compare_specimen("Sh02-Sd020", "glued", engines=("mujoco",), frictions=("none",))

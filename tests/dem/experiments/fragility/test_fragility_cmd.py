@@ -15,6 +15,7 @@ def _json(capsys, argv):
     return json.loads(capsys.readouterr().out)
 
 
+@pytest.mark.slow
 def test_sine_stripes_json_tables_and_resume(tmp_path, capsys):
     study = tmp_path / "f.h5"
     argv = ["fragility", *BLOCK, "--sine", "2", "--amplitudes", "0.29,0.31,0.33", "--realizations", "3",
@@ -41,6 +42,7 @@ def test_sine_stripes_json_tables_and_resume(tmp_path, capsys):
     assert "--realizations 2 is not the study's" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_a_record_suite_in_stripes_of_pga_and_sa(tmp_path, short_records, capsys):
     files = short_records
     for im in ("pga", "sa:0.4"):

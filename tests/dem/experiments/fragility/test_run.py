@@ -29,6 +29,7 @@ def _case(structure, settings, pert, k, amp, freq=2.0):
             "realisation": k, "group": "g", "intensity": amp, "motion": sine_spec(freq, amp)}
 
 
+@pytest.mark.slow
 def test_no_perturbation_is_the_deterministic_run_bit_for_bit():
     from analytic.motions.inputs import SinePulse
     from specimens.constants import G
@@ -41,6 +42,7 @@ def test_no_perturbation_is_the_deterministic_run_bit_for_bit():
     assert out["peak_displacement"] == float(ref.sim.history.dmax.max())  # the same engine steps
 
 
+@pytest.mark.slow
 def test_realisations_are_seeded():
     st = arch_structure(get_specimen("Sh06-Sd015").arch)
     pert = Perturbation(edge_loss_sd=0.25e-3, friction_cov=0.1)
@@ -53,10 +55,11 @@ def test_realisations_are_seeded():
 
 @pytest.mark.parametrize("freq, amps", [(2.0, (0.29, 0.30, 0.305, 0.31, 0.315, 0.32, 0.33)),
                                         (3.0, (0.34, 0.35, 0.355, 0.36, 0.365, 0.37, 0.38))])
+@pytest.mark.slow
 def test_the_block_median_meets_the_rocking_block_model(tmp_path, freq, amps):
     """An independent truth: a planar block (0.1 x 0.4 m, no sliding) with its dimensions scattered by
-    0.25 mm has its fitted median within 5 % of the closed-form overturning amplitude of a one-cycle
-    sine (Housner's restitution), at two frequencies."""
+    0.25 mm has its fitted median within 2 % of the closed-form overturning amplitude of a one-cycle
+    sine (Housner's restitution), at two frequencies (measured 0.4 % and 0.8 %; the stripes are 1.6 % apart)."""
     from specimens.constants import G
 
     dom = failure_domain(RockingBlock(0.05, 0.2), "sine0", [freq], a_max_ratio=8.0, n_scan=16, workers=1)
@@ -65,10 +68,11 @@ def test_the_block_median_meets_the_rocking_block_model(tmp_path, freq, amps):
     res = fragility("block", BLOCK, RIGID, Perturbation(size_sd=0.25e-3), groups, 6, 11, tmp_path / "b.h5",
                     workers=2, progress=False)
     fit = res.curves[0].fit
-    assert fit is not None and abs(fit.median / a_an - 1) <= 0.05, (fit.median, a_an)
-    assert fit.beta < 0.1 and not res.failed
+    assert fit is not None and abs(fit.median / a_an - 1) <= 0.02, (fit.median, a_an)
+    assert fit.beta < 0.05 and not res.failed  # measured 0.002 and 0.015
 
 
+@pytest.mark.slow
 def test_a_local_dask_cluster_gives_the_local_pool_results(tmp_path):
     """A real scheduler and two worker processes on localhost against the local pool."""
     distributed = pytest.importorskip("distributed")

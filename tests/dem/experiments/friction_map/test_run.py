@@ -64,6 +64,7 @@ def test_threshold_bracket_rules():
 
 
 # ----------------------------------------------------------------------------- map machinery
+@pytest.mark.slow
 def test_map_bisection_brackets_known_threshold(tmp_path):
     true = 0.537
     r = _map(tmp_path, specimens=("Sh06-Sd015", "Sh1-Sd025"), workers=2, refine=3, extra=_syn(true))
@@ -77,6 +78,7 @@ def test_map_bisection_brackets_known_threshold(tmp_path):
     assert r.rounds == 3 and r.n_failed == 0 and r.n_cases == 2 * 16
 
 
+@pytest.mark.slow
 def test_map_resume_after_crash_repeats_nothing(tmp_path):
     count = tmp_path / "count"
     count.mkdir()
@@ -103,6 +105,7 @@ def test_map_resume_after_crash_repeats_nothing(tmp_path):
     assert len(list(count.iterdir())) == len(files)
 
 
+@pytest.mark.slow
 def test_failing_case_recorded_others_complete(tmp_path):
     r = _map(tmp_path, refine=2, extra=_syn(fail_mu=0.8))
     s = r.specimens[0]
@@ -114,6 +117,7 @@ def test_failing_case_recorded_others_complete(tmp_path):
     assert len(rows) == 15 and {"id", "mu", "lambda", "mode"} <= set(rows[0])
 
 
+@pytest.mark.slow
 def test_dask_map_equals_local_map(tmp_path):
     distributed = pytest.importorskip("distributed", reason="the cluster extra is not installed (pip install -e '.[cluster]')")
     local = _map(tmp_path, "local.h5", refine=2, extra=_syn(fail_mu=0.9))
@@ -126,6 +130,7 @@ def test_dask_map_equals_local_map(tmp_path):
     assert remote.specimens[0].threshold == local.specimens[0].threshold
 
 
+@pytest.mark.slow
 def test_figures_written(tmp_path):
     r = _map(tmp_path, specimens=("Sh06-Sd015", "Sh1-Sd025"), refine=1)
     paths = r.figures(tmp_path / "figs")
@@ -223,6 +228,7 @@ def _cli(argv, capsys):
     return code, out.out, out.err
 
 
+@pytest.mark.slow
 def test_cli_json_schema(tmp_path, capsys, monkeypatch):
     # the CLI with the synthetic case function (the DEM path is covered by the real map test)
     real = fm.catalogue_map
@@ -301,6 +307,7 @@ def test_real_dem_map_two_frictions(tmp_path):
     assert th.lo < s.analytic.mu_star_lp <= th.hi
 
 
+@pytest.mark.slow
 def test_replay_tilt_reproduces_the_collapse():
     # the report's collapse figure re-runs the collapsing level of a stored case: the engine is
     # deterministic for identical command sequences, so mode and joint states must be the case's
@@ -315,6 +322,7 @@ def test_replay_tilt_reproduces_the_collapse():
     assert [lv for lv, _ in rep.levels] == pytest.approx(np.asarray(res["levels"])[:, 0])
 
 
+@pytest.mark.slow
 def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
     """The map on piers: every case carries the piers, the references are those of the arch on
     piers (LP, enumeration, hinges anywhere), the two-bar ones (a ring on a rigid base) are absent."""

@@ -17,12 +17,13 @@ ENGINES = [pytest.param(e, marks=pytest.mark.skipif(importlib.util.find_spec(e) 
 
 
 @pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.slow
 def test_a_blocks_frequencies_and_damping(engine):
     """Vertical sqrt(k_n A / m); rocking on the springs at the base's ends (friction holds the base),
-    sqrt((k_n A b^2 / 4 - m g h/2) / I_o) about the base centre — within 3 %, and the same as
-    analytic.compliant.modes; the damping ratios beta_R omega / 2 (rocking: times 1 + m g h/2 / (I_o omega²), the
-    weight softens the mode, not its dashpots) within 20 % (PyBullet's implicit contact adds 0.001-0.004
-    of its own at dt 0.1 ms)."""
+    sqrt((k_n A b^2 / 4 - m g h/2) / I_o) about the base centre — within 1 % (measured 0.31 % at most), and
+    the same as analytic.compliant.modes; the damping ratios beta_R omega / 2 (rocking: times 1 + m g h/2 / (I_o omega²),
+    the weight softens the mode, not its dashpots) within 10 % (measured 5.0 % at most: PyBullet's implicit
+    contact adds 0.001-0.004 of its own at dt 0.1 ms, up to 8 % of 0.05)."""
     m = RHO * B * H * W
     w_v = math.sqrt(KN * B * W / m)
     Io = m * (B * B + H * H) / 12 + m * (H / 2) ** 2
@@ -31,12 +32,12 @@ def test_a_blocks_frequencies_and_damping(engine):
     r = free_vibration(single_block(B, H, W, RHO), Settings(engine=engine, dt=1e-4, contact_law="compliant", kn=KN,
                                                             damping_beta=beta))
     fm = modes(block_structure(B / 2, H / 2, RHO, W), KN, 1e4 * KN).frequencies_hz
-    assert r["vertical"].frequency_hz == pytest.approx(w_v / (2 * math.pi), rel=0.03)
-    assert r["rocking"].frequency_hz == pytest.approx(f_r, rel=0.03)
+    assert r["vertical"].frequency_hz == pytest.approx(w_v / (2 * math.pi), rel=0.01)
+    assert r["rocking"].frequency_hz == pytest.approx(f_r, rel=0.01)
     assert fm[:2] == pytest.approx([f_r, w_v / (2 * math.pi)], rel=1e-3)
-    assert r["vertical"].damping == pytest.approx(0.05, rel=0.2)
+    assert r["vertical"].damping == pytest.approx(0.05, rel=0.1)
     w_r = 2 * math.pi * f_r
-    assert r["rocking"].damping == pytest.approx(beta * w_r / 2 * (1 + m * G * H / 2 / (Io * w_r**2)), rel=0.2)
+    assert r["rocking"].damping == pytest.approx(beta * w_r / 2 * (1 + m * G * H / 2 / (Io * w_r**2)), rel=0.1)
 
 
 def test_rigid_joints_have_no_free_vibration():
@@ -46,9 +47,10 @@ def test_rigid_joints_have_no_free_vibration():
         free_vibration(single_block(B, H, W, RHO), Settings())
 
 
+@pytest.mark.slow
 def test_an_arch_crown_vibrates_at_the_symmetric_mode_of_modes():
     """Sh02-Sd025 on soft joints (1e6 Pa/m): the crown's vertical vibration in PyBullet at the first
-    mode of analytic.compliant.modes that moves the crown vertically only (the symmetric one), within 3 %."""
+    mode of analytic.compliant.modes that moves the crown vertically only (the symmetric one), within 3 % (measured 1.8 %)."""
     import numpy as np
 
     from dem.core.model import as_model

@@ -12,6 +12,7 @@ from specimens.blocks import discretise
 from specimens.catalogue import STUDY_JOINTS
 
 
+@pytest.mark.slow
 def test_modes_step_lists_every_specimen(tmp_path):
     specs = [get_specimen(s) for s in ("Sh02-Sd015", "Sh06-Sd020")]
     ctx = CampaignContext(out=tmp_path, specimens=specs, log=lambda _: None)

@@ -1,5 +1,6 @@
 """The virtual check of an assessment: matched records on the DEM, and the codes' rule over them."""
 import numpy as np
+import pytest
 
 from analytic.motions.inputs import SampledMotion
 from dem.experiments.record.run import RecordRun, dem_verdict, run_records
@@ -20,6 +21,7 @@ def test_the_rule_over_the_records():
     assert v["n_collapsed"] == 1 and not v["verified"]
 
 
+@pytest.mark.slow
 def test_a_strong_pulse_moves_the_mass_centroid_and_a_weak_one_does_not():
     """A 0.6 s full-sine pulse of 1.2 g (far above lambda = 0.29) opens the arch: its mass centroid moves
     millimetres; at 0.05 g (below the onset) it moves microns at most."""

@@ -20,6 +20,7 @@ def shake_file(tmp_path_factory):
     return save_shake(res, tmp_path_factory.mktemp("anim") / "run.h5"), res
 
 
+@pytest.mark.slow
 def test_gif_of_shake_run(shake_file, tmp_path):
     from PIL import Image
 
@@ -35,6 +36,7 @@ def test_gif_of_shake_run(shake_file, tmp_path):
         animate(path, out)  # never overwritten
 
 
+@pytest.mark.slow
 def test_gif_of_tilt_run(tmp_path):
     from dem.experiments.tilt.file import save_result
     from dem.experiments.tilt.run import TiltProtocol, tilt

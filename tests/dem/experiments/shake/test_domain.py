@@ -129,6 +129,7 @@ def analytic():
     return analytic_domains(SPEC.arch, FREQS, workers=1)
 
 
+@pytest.mark.slow
 def test_analytic_domains_are_the_four_bar_and_two_bar_of_the_arch(analytic):
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.two_bar import lambda_two_bar
@@ -146,6 +147,7 @@ def test_analytic_domains_are_the_four_bar_and_two_bar_of_the_arch(analytic):
         assert all(p["amplitude_g"] > dom.lam for p in dom.points())
 
 
+@pytest.mark.slow
 def test_analytic_domains_agree_with_failure_domain_called_directly(analytic):
     from analytic.rocking import linkage
     from analytic.rocking.domain import failure_domain
@@ -157,6 +159,7 @@ def test_analytic_domains_agree_with_failure_domain_called_directly(analytic):
 
 
 @pytest.mark.parametrize("freq", FREQS)
+@pytest.mark.slow
 def test_four_bar_threshold_separates_survival_from_collapse(analytic, freq):
     """The four-bar's own dynamics just below and just above its least collapsing amplitude."""
     from analytic.rocking import linkage

@@ -62,6 +62,7 @@ def test_rock_plot_and_json(tmp_path, capsys):
     assert main(["rock", "--block", "0.1", "0.5", "--freq", "2", "--amplitude", "0.3", "--plot", str(png)]) == 2  # never overwrite
 
 
+@pytest.mark.slow
 def test_domain_plot(tmp_path, capsys):
     png = tmp_path / "d.png"
     assert main(["domain", "--block", "0.1", "0.5", "--freq", "2,4", "--scan", "8", "--tol", "1e-2",

@@ -61,6 +61,7 @@ BAND = {2.0: (0.02, 0.02), 3.0: (0.10, 0.02), 5.0: (0.10, 0.02)}
 
 
 @pytest.mark.parametrize("freq", sorted(BAND))
+@pytest.mark.slow
 def test_overturning_amplitude_matches_rocking_block_model(block, freq):
     """The DEM overturning amplitude of a plain one-cycle sine against the analytic rocking-block
     threshold (docs/physics/dynamics.md#2-the-rocking-block, Housner restitution from the momentum
@@ -127,6 +128,7 @@ def test_skipping_the_friction_readout_leaves_the_run_unchanged(block):
     # (the analytic threshold is 0.3602 g, but the DEM collapses in an island from 0.3287 g, BAND)
     pytest.param(0.32, 3.0, id="regression-pin-rocks-and-survives"),
 ])
+@pytest.mark.slow
 def test_a_run_ends_once_at_rest_after_the_motion(block, amp_g, freq):
     """The end-at-rest rule (ShakeProtocol.rest_after) only cuts a survived run short: the run is
     the same step for step up to the end, with the same outcome and residual displacement as the

@@ -38,6 +38,7 @@ def test_bad_input_exit_2(capsys, tmp_path):
     assert err.count("archdem: error") == len(cases)
 
 
+@pytest.mark.slow
 def test_shake_json_and_files(tmp_path, capsys):
     out = tmp_path / "runs"
     rc = main(["shake", *SMALL, "--sine", "4", "--amplitude", "0.3", "--json", "--out", str(out),
@@ -111,6 +112,7 @@ def test_threshold_json(tmp_path, capsys):
     assert d["amplitude_g"] >= d["lambda"] * 0.99
 
 
+@pytest.mark.slow
 def test_shake_and_threshold_take_the_effective_contact(tmp_path, capsys):
     from analytic.limit.limit_discrete import solve_lp
     from dem.core.settings import Settings
@@ -130,6 +132,7 @@ def test_shake_and_threshold_take_the_effective_contact(tmp_path, capsys):
     assert d["amplitude_g"] is not None and d["amplitude_g"] >= 0.99 * d["lambda"]
 
 
+@pytest.mark.slow
 def test_domain_engine_dem(tmp_path, capsys):
     rc = main(["domain", *SMALL, "--engine", "dem", "--freq", "5", "--json", "--workers", "1",
                "--plot", str(tmp_path / "d.png"), "--amax", "3"])

@@ -111,6 +111,7 @@ def test_threshold_same_runs_with_one_and_two_processes(monkeypatch, freq):
         assert lo < 0.45 <= hi and hi / lo - 1 <= 0.01
 
 
+@pytest.mark.slow
 def test_block_threshold_scan_and_bisection():
     """Full search on the single block at 3 Hz (planar, no sliding, two processes): the answer lies
     within 10 % of the analytic rocking-block threshold 0.3602 g (see test_shake for the tolerance),
@@ -163,6 +164,7 @@ def test_arch_threshold_no_sliding_2hz_above_static_onset():
     assert r.amplitude_g == pytest.approx(a_fb / G, rel=0.10)
 
 
+@pytest.mark.slow
 def test_a_threshold_on_a_local_dask_cluster_is_the_local_one():
     """A real scheduler and two worker processes run the scan and the bisection: the same runs."""
     distributed = pytest.importorskip("distributed")

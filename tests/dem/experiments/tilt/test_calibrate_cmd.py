@@ -13,6 +13,7 @@ Sh1-Sd015,0.256,0.021,rocking
 """
 
 
+@pytest.mark.slow
 def test_calibrate_stores_what_contact_calibrated_uses(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "lab.csv").write_text(TABLE)
@@ -29,6 +30,7 @@ def test_calibrate_stores_what_contact_calibrated_uses(tmp_path, monkeypatch, ca
     assert out["lambda_lp"] == pytest.approx(cal["specimens"][0]["lambda_fit"], rel=1e-9)
 
 
+@pytest.mark.slow
 def test_an_existing_calibration_is_kept_unless_replaced(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "lab.csv").write_text(TABLE)

@@ -16,6 +16,8 @@ from specimens.blocks import discretise
 from specimens.catalogue import STUDY_JOINTS
 from specimens.constants import NO_SLIDING_MU
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 
 def _tilt(kn: float, beta: float):
     asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")

@@ -12,6 +12,8 @@ from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 # the thinnest specimen, where PyBullet's hull rounding of relieved faces cost 4.9 % before the pads
 # of docs/engines.md#9-relieved-joints-in-pybullet
 SID, CONTACT = "Sh06-Sd010", 0.7

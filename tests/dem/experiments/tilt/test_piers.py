@@ -26,6 +26,7 @@ def _settings(engine: str, **kw) -> Settings:
 
 
 @pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
+@pytest.mark.slow
 def test_frame_tilt_is_b_over_h_whatever_the_lintel(engine):
     # measured +0.05 % in both engines for gamma 0.1 and 1.9; 1 %: the bisection's 0.5 % bracket and the
     # single block's +0.2 % rocking offset (docs/validation.md#3-single-block), with room
@@ -36,6 +37,7 @@ def test_frame_tilt_is_b_over_h_whatever_the_lintel(engine):
 
 
 @pytest.mark.parametrize("engine", ["pybullet", "mujoco"])
+@pytest.mark.slow
 def test_arch_on_four_course_loaded_piers_tilts_at_the_lp(engine):
     arch = get_specimen("Sh06-Sd015").arch
     asm = discretise(arch, piers=Piers(0.4, 3 * arch.t, courses=4, load=20.0))
@@ -65,6 +67,7 @@ def _closed_form_threshold(f, freq: float) -> float:
     ("mujoco", 1000.0, 2.0), ("mujoco", 1000.0, 3.0), ("mujoco", 1000.0, 5.0), ("mujoco", 50.0, 5.0),
     ("pybullet", 1000.0, 2.0),
 ])
+@pytest.mark.slow
 def test_frame_overturning_amplitude_matches_the_closed_form(engine, beam_density, freq):
     f = rocking_frame(B, H, 0.3, 0.05, beam_density=beam_density)
     a_cf = _closed_form_threshold(f, freq)

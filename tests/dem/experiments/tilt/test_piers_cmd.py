@@ -27,6 +27,7 @@ def test_analytic_names_the_hinges_in_the_piers(capsys):
     assert d["lambda_discrete"] < bare["lambda_discrete"]
 
 
+@pytest.mark.slow
 def test_rock_and_domain_use_the_four_bar_through_the_piers(capsys):
     a = _json(capsys, ["analytic", "Sh06-Sd015", *PIERS, "--json"])
     r = _json(capsys, ["rock", "Sh06-Sd015", *PIERS, "--freq", "3", "--amplitude", "0.18", "--json"])
@@ -46,4 +47,9 @@ def test_draw_and_mesh_show_the_piers(tmp_path, capsys):
     assert main(["mesh", "Sh06-Sd015", *PIERS, "--pier-depth", "0.2", "--out", str(tmp_path / "m")]) == 0
     names = {p.name for p in (tmp_path / "m").iterdir()}
     assert {"LP1_p0.stl", "LP3_p0.stl", "RP1_p0.stl", "C_p0.stl"} <= names
+    import trimesh
+
+    for course in ("LP1", "LP3", "RP1", "RP3"):  # a closed box, height / courses x width x depth (float32 STL)
+        m = trimesh.load(tmp_path / "m" / f"{course}_p0.stl")
+        assert m.is_watertight and m.volume == pytest.approx(0.3 / 3 * 0.1 * 0.2, rel=1e-6)
     assert "Sh06-Sd015-piers-H0.3-B0.1-N3" in capsys.readouterr().out

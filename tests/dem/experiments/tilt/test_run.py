@@ -31,6 +31,7 @@ def _run(case: str, kind: str, rate: float = 0.005):
 
 @pytest.mark.parametrize("kind", ["staircase", "ramp"])
 @pytest.mark.parametrize("case", ["slide", "rock"])
+@pytest.mark.slow
 def test_block_threshold(case, kind):
     r = _run(case, kind)
     truth = TRUTH[case]
@@ -49,6 +50,7 @@ def test_block_threshold(case, kind):
         assert r.lam == pytest.approx(truth, rel=0.02)  # the 2 % for the block
 
 
+@pytest.mark.slow
 def test_ramp_rate_insensitivity():
     # docs/validation.md#8-insensitivity-to-time-step-and-rate: halving the ramp rate changes lambda by < 2 %
     fast, slow = _run("rock", "ramp", 0.01), _run("rock", "ramp", 0.005)
@@ -204,6 +206,7 @@ def test_rest_rule_does_not_end_a_block_sliding_just_above_mu(excess):
         assert r.collapsed
 
 
+@pytest.mark.slow
 def test_rest_rule_on_an_arch_below_and_above_the_lp():
     # with no sliding the LP is the exact threshold: 0.9 x LP is at rest (ends early), 1.01 x LP
     # collapses as when held the full hold

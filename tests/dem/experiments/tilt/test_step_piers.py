@@ -9,6 +9,8 @@ from dem.common.campaign import CampaignContext
 from dem.experiments.tilt.step_piers import PIER_HEIGHTS_QUICK
 from specimens.catalogue import select_specimens
 
+pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
+
 
 @pytest.fixture(scope="module")
 def piers(tmp_path_factory):
@@ -42,8 +44,12 @@ def test_hinges_move_into_the_piers_in_la_and_dem(piers):
 
 
 def test_the_study_is_in_the_report(piers):
-    out, manifest, _ = piers
+    out, manifest, rows = piers
     rec = manifest["steps"]["piers"]["outputs"]
     assert (out / rec["figures"][0]["path"]).is_file() and "lambda falls from" in rec["findings"][0]
+    # the findings say what the table says
+    lp = [float(r["lambda_lp_no_sliding"]) for r in rows]
+    assert rec["findings"][0].startswith(f"lambda falls from {lp[0]:.3f} (the ring on a rigid base) to {lp[-1]:.3f} ")
+    assert f"within {max(abs(float(r['err_dem_vs_lp_pct'])) for r in rows):.1f} % of the LP" in rec["findings"][1]
     assert "[piers]" in (out / "report.html").read_text(encoding="utf-8")
     assert not math.isnan(manifest["steps"]["piers"]["wall_s"])

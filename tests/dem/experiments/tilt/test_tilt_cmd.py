@@ -14,6 +14,7 @@ def test_bad_input_exit_2(capsys):
     assert err.count("\n") == 2 and "archdem: error" in err
 
 
+@pytest.mark.slow
 def test_tilt_json(tmp_path, capsys):
     # a small arch (2 voussoirs per side, glued: 3 bodies) keeps this fast
     out = tmp_path / "runs"
@@ -31,6 +32,7 @@ def test_tilt_json(tmp_path, capsys):
     assert load_result(d["result_file"]).lam == pytest.approx(d["lambda"])
 
 
+@pytest.mark.slow
 def test_tilt_full_hold_is_stored(tmp_path, capsys):
     # --full-hold switches the hold's rest rule off; the result file says so (rest_after null)
     from dem.experiments.tilt.file import load_result
@@ -44,6 +46,7 @@ def test_tilt_full_hold_is_stored(tmp_path, capsys):
     assert np.isnan(full.stable.t_rest)
 
 
+@pytest.mark.slow
 def test_python_call_gives_the_cli_answer(tmp_path, capsys):
     # the CLI and dem.tilt on the same arch: the same search (LP-started), levels and lambda
     from dem import tilt
@@ -59,6 +62,7 @@ def test_python_call_gives_the_cli_answer(tmp_path, capsys):
 SMALL = ["--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2"]
 
 
+@pytest.mark.slow
 def test_contact_is_reported_and_lowers_lambda(tmp_path, capsys):
     assert main(["tilt", *SMALL, "--json", "--out", str(tmp_path)]) == 0
     full = json.loads(capsys.readouterr().out)
@@ -68,6 +72,7 @@ def test_contact_is_reported_and_lowers_lambda(tmp_path, capsys):
     assert part["lambda"] < 0.85 * full["lambda"]
 
 
+@pytest.mark.slow
 def test_ensemble_of_zero_scatter_repeats_the_single_tilt_bit_for_bit(tmp_path, capsys):
     """Zero perturbation reproduces the deterministic run: every realisation gives the tilt test's lambda."""
     assert main(["tilt", *SMALL, "--contact", "0.8", "--json", "--out", str(tmp_path)]) == 0
@@ -79,6 +84,7 @@ def test_ensemble_of_zero_scatter_repeats_the_single_tilt_bit_for_bit(tmp_path, 
     assert ens["modes"] == {single["mode"]: 2} and ens["seeds"] == [[4, 0], [4, 1]] and ens["failed"] == []
 
 
+@pytest.mark.slow
 def test_ensemble_realisations_differ_and_are_reproducible(tmp_path, capsys):
     args = ["tilt", *SMALL, "--contact", "0.8", "--ensemble", "3", "--seed", "9", "--scatter", "2",
             "--workers", "2", "--json", "--out", str(tmp_path)]
