@@ -55,7 +55,7 @@ clean:
 # the tests of PY313_TESTS there, then the quick campaign's catalogue, tilt, shake and map tables
 # of one specimen on 3.13 and on this venv's Python, compared cell by cell (.ci/same_tables.py).
 PY313_TESTS  ?= tests/specimens tests/analytic tests/dem/core tests/dem/campaign tests/dem/cli \
-                tests/dem/experiments/test_tilt.py tests/test_readme.py
+                tests/dem/experiments/tilt/test_run.py tests/test_readme.py
 SAME_NUMBERS ?= --quick --specimens Sh02-Sd020 --steps catalogue,tilt,shake,map
 SAME_DIR     := runs/same-numbers
 
