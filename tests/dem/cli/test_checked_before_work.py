@@ -1,5 +1,6 @@
 """Every output and option is checked before the first simulation: a refusal comes in one line,
 under a second, with nothing written; an option that does nothing where it is given is refused."""
+import os
 import time
 
 import pytest
@@ -42,7 +43,8 @@ def _refused_at_once(tmp_path, monkeypatch, capsys, argv, msg):
     (["shake", "Sh02-Sd020", *SINE, "--plot", ""], "--plot is empty"),
     (["domain", "Sh02-Sd020", "--engine", "dem", "--freq", "4", "--plot", " "], "--plot is empty"),
     ([*FRAGILITY, "--plot", ""], "--plot is empty"),
-    (["shake", "Sh02-Sd020", *SINE, "--out", "/sys/x"], "cannot create directory /sys/x"),
+    pytest.param(["shake", "Sh02-Sd020", *SINE, "--out", "/sys/x"], "cannot create directory /sys/x",
+                 marks=pytest.mark.skipif(not os.path.ismount("/sys"), reason="no sysfs at /sys here: a plain, writable folder")),
     (["shake", "Sh02-Sd020", *SINE, "--plot", "old.png"], "exists"),
     (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--plot", "x.txt"], "--plot must end in"),
     (["domain", "Sh02-Sd020", "--plot", "x.txt"], "--plot must end in"),

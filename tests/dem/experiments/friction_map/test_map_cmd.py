@@ -6,6 +6,7 @@ import shutil
 import time
 
 import h5py
+import pytest
 
 from dem.cli import main
 
@@ -24,6 +25,7 @@ def _interrupted(src, dst) -> None:
         del f["cases"][sorted(f["cases"])[0]]
 
 
+@pytest.mark.slow  # three maps of two cases
 def test_resume_with_and_without_its_arguments_gives_the_uninterrupted_map(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     assert main([*MAP, "--out", "full.h5", "--json"]) == 0
@@ -42,6 +44,7 @@ def test_resume_with_and_without_its_arguments_gives_the_uninterrupted_map(tmp_p
         assert [s["mu_star_dem"] for s in resumed] == [s["mu_star_dem"] for s in full]
 
 
+@pytest.mark.slow  # a map run before the refusals
 def test_an_argument_that_disagrees_with_the_study_is_refused_at_once(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     assert main([*MAP, "--mu", "0.4", "--out", "m.h5", "--json"]) == 0
