@@ -114,7 +114,7 @@ def _slope(x, y) -> float:
 
 
 def main() -> None:
-    from dem.core.provenance import package_version
+    from dem.core.provenance import engine_version
     from dem.core.settings import Settings
     from specimens.catalogue import select_specimens
     from specimens.io import atomic_path
@@ -137,7 +137,7 @@ def main() -> None:
     engines = [e.strip() for e in a.engines.split(",") if e.strip()]
     copies = [int(c) for c in a.copies.split(",")]
     res: dict = {"specimen": SPECIMEN, "config": "glued", "engines": engines,
-                 "versions": {e: package_version(e) for e in engines}, "cpu_count": os.cpu_count(),
+                 "versions": {e: engine_version(e) for e in engines}, "cpu_count": os.cpu_count(),
                  "load_avg_start": list(os.getloadavg()), "repeats": a.repeats, "tilt_repeats": a.tilt_repeats,
                  "threshold_repeats": a.threshold_repeats,
                  "protocol_dt_s": Settings().dt}

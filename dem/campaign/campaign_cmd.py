@@ -19,6 +19,7 @@ from dem.common.options import (
     workers_option,
     writable_dir,
 )
+from dem.core.engines import available_engines
 from specimens.catalogue import select_specimens
 from specimens.errors import ArchdemInputError
 
@@ -53,6 +54,7 @@ def _campaign(args: argparse.Namespace) -> int:
         contact_law_settings(args, None) or None)
     out = writable_dir(args.out)
     ctx = CampaignContext(out=Path(out), specimens=specs, config=args.config, engine=args.engine,
+                          dynamics_engine=args.dynamics_engine,
                           quick=args.quick, workers=args.workers, contact=args.contact, scheduler=args.scheduler,
                           joints=joints)
     t0 = time.perf_counter()
@@ -66,7 +68,7 @@ def _campaign(args: argparse.Namespace) -> int:
         est = estimate(ctx, steps_run, speed=speed)
         total = sum(e["wall_s"] for e in est.values())
         parts = "; ".join(f"{k}: {e['units']} {e['what']}" for k, e in est.items())
-        print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine}: {parts}; estimated "
+        print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine} (shakes {ctx.dynamics_engine}): {parts}; estimated "
               f"{_duration(total)} of simulation at this machine's {speed:.2f} s per simulated second "
               f"(the unit costs are for a machine reading {REFERENCE_SPEED[ctx.engine]:.2f}; steps already finished "
               f"in {out} are kept)", flush=True)
@@ -86,6 +88,7 @@ def _restore(args: argparse.Namespace) -> None:
     except (OSError, ValueError, AttributeError):
         return  # no campaign there yet (or no readable one: the runner says so)
     stored = {"specimens": params.get("specimens"), "config": params.get("config"), "engine": params.get("engine"),
+              "dynamics_engine": params.get("dynamics_engine"),
               "quick": params.get("quick"), "contact": params.get("contact", 1.0)}
     if params.get("joints") == "table-5.1":
         stored["joints"] = "table-5.1"
@@ -117,6 +120,9 @@ def register(sub) -> None:
                    help="effective contact of every joint in every step, in (0, 1], or 'calibrated' (archdem calibrate; "
                         f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
     add_engine_argument(p)
+    p.add_argument("--dynamics-engine", choices=tuple(available_engines()), default=default_of(CampaignContext, "dynamics_engine"),
+                   help="engine of the shake, record and fragility steps (default "
+                        f"{default_of(CampaignContext, 'dynamics_engine')}; --engine runs the others)")
     add_contact_law_arguments(p)
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")

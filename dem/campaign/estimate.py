@@ -38,6 +38,7 @@ ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7, "lmgc90": 10.0}  # lmgc90: a 6 Hz
 # scales the unit costs by this machine's reading over these (docs/timings.md#3-the-campaigns-time-estimate)
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25, "lmgc90": 2.85}  # lmgc90: 1.5 x PyBullet's, paired at rest
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
+DYNAMIC_STEPS = ("shake", "record", "fragility")  # the steps that run CampaignContext.dynamics_engine
 
 
 def machine_speed(engine: str = "pybullet", steps: int = 200, repeats: int = 3) -> float:
@@ -81,7 +82,8 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     out = {}
     for name in (s for s in steps if s in units):
         n, what = units[name]
+        engine = ctx.dynamics_engine if name in DYNAMIC_STEPS else ctx.engine
         # units (or, for thresholds, the simulations inside one unit) run in parallel on the cores
-        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(ctx.engine, 1.0) * scale
+        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
     return out

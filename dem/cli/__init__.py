@@ -18,7 +18,7 @@ from dem.campaign import campaign_cmd
 from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
 from dem.common.options import common_rules, restore_study
 from dem.experiments.assessment import assess_cmd
-from dem.experiments.compare_engines import compare_engines_cmd
+from dem.experiments.compare_engines import compare_engines_cmd, compare_shake_cmd
 from dem.experiments.fragility import fragility_cmd
 from dem.experiments.friction_map import map_cmd
 from dem.experiments.modes import modes_cmd
@@ -46,6 +46,7 @@ _COMMANDS = [
     threshold_cmd,
     animate_cmd,
     compare_engines_cmd,
+    compare_shake_cmd,
     fragility_cmd,
     modes_cmd,
 ]

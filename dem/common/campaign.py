@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Callable
 
 from dem.common.joints import contact_fraction, joint_law, joint_law_text
+from dem.core.settings import DYNAMICS_ENGINE
 from specimens.io import atomic_path, to_json
 
 
@@ -17,7 +18,8 @@ class CampaignContext:
     out: Path
     specimens: list  # list[specimens.catalogue.Specimen]
     config: str = "glued"
-    engine: str = "pybullet"
+    engine: str = "pybullet"  # the tilt, lab, map and piers steps
+    dynamics_engine: str = DYNAMICS_ENGINE  # the shake, record and fragility steps (docs/decisions/011-dynamics-engine.md)
     quick: bool = True
     workers: int | None = None
     scheduler: str | None = None  # a Dask scheduler address: every sweep of the campaign runs there

@@ -12,7 +12,7 @@ from typing import Any
 
 from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
 from dem.core.engines import available_engines
-from dem.core.settings import CONTACT_LAWS, MAX_DAMPING_XI, Settings
+from dem.core.settings import CONTACT_LAWS, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.errors import ArchdemInputError
@@ -388,11 +388,12 @@ def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
 
 
-def add_engine_argument(p: argparse.ArgumentParser) -> None:
-    """``--engine pybullet|mujoco|lmgc90`` (the physics backend of the simulator)."""
-    engine = default_of(Settings, "engine")
+def add_engine_argument(p: argparse.ArgumentParser, dynamics: bool = False) -> None:
+    """``--engine pybullet|mujoco|lmgc90`` (the physics backend of the simulator); its default is the
+    statics' (:class:`Settings`), or with ``dynamics`` the shakes' (:data:`DYNAMICS_ENGINE`)."""
+    engine = DYNAMICS_ENGINE if dynamics else default_of(Settings, "engine")
     p.add_argument("--engine", choices=tuple(available_engines()), default=engine,
-                   help=f"physics engine (default {engine}; see README 'Choosing an engine')")
+                   help=f"physics engine (default {engine}; see docs/engines.md §5)")
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:
@@ -426,9 +427,11 @@ def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> d
     """The contact-law fields of :class:`dem.core.settings.Settings` from the command line ({} = rigid),
     for the specimen ``specimen_id`` (``--joints table-5.1``) and the engine ``args.engine``."""
     out = _contact_law(args, specimen_id)
-    if out and getattr(args, "engine", None) == "mujoco" and not (out.get("damping_beta") or out.get("damping_xi")):
-        raise ArchdemInputError("compliant joints on --engine mujoco need --damping-beta or --damping-xi: undamped, the "
-                                "blocks keep bouncing on their springs and the joints slip (docs/engines.md#10-compliant-joints)")
+    engines = (getattr(args, "engine", None), getattr(args, "dynamics_engine", None))
+    if out and "mujoco" in engines and not (out.get("damping_beta") or out.get("damping_xi")):
+        raise ArchdemInputError("compliant joints on MuJoCo (--engine mujoco, the shakes' default) need --damping-beta or "
+                                "--damping-xi: undamped, the blocks keep bouncing on their springs and the joints slip "
+                                "(docs/engines.md#10-compliant-joints)")
     return out
 
 

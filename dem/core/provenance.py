@@ -5,7 +5,7 @@ import platform
 import sys
 from importlib.metadata import PackageNotFoundError, version
 
-from dem.core.engines import get_engine
+from dem.core.engines import engine_package, get_engine
 
 
 def package_version(name: str) -> str:
@@ -32,6 +32,11 @@ def cpu_math() -> str:
     f, _ = numpy_cpu()
     libc = " ".join(platform.libc_ver()).strip() or "unknown libc"
     return f"{platform.machine()} {libc}; " + " ".join(k for k in ("FMA3", "AVX2", "AVX512F") if f.get(k))
+
+
+def engine_version(name: str) -> str:
+    """The installed version of engine ``name``'s package ("not installed" if it is not)."""
+    return package_version(engine_package(name))
 
 
 def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:

@@ -21,6 +21,10 @@ CONTACT_LAWS = ("rigid", "compliant")
 #: Largest damping ratio of the joints at omega_r (the study's Table 5.1 is 0.5 there, docs/physics/dem.md#17):
 #: at 2 every mode above omega_r / 2 is already overdamped, more only slows the blocks down.
 MAX_DAMPING_XI = 2.0
+#: The engine of shakes, thresholds, failure domains, fragility and records unless one is named: its
+#: shake answers hold under the time step and match LMGC90's, PyBullet's do neither
+#: (docs/decisions/011-dynamics-engine.md).
+DYNAMICS_ENGINE = "mujoco"
 
 
 @dataclass(frozen=True)
@@ -36,7 +40,7 @@ class Settings:
 
     # engine and solver: 0.5 ms / 100 iterations is the cheapest pair that keeps the no-sliding lambda
     # within 3 % of the LP and the hinge layouts (docs/decisions/006-solver-settings.md)
-    engine: str = "pybullet"
+    engine: str = "pybullet"  # the tilt's and the statics'; shakes default to DYNAMICS_ENGINE (dynamics_settings)
     dt: float = 5e-4  # [s]; the no-sliding lambda bias shrinks with dt
     solver_iterations: int = 100  # per step; 0.5 ms / 100 costs about what 1 ms / 200 did per simulated second
 
@@ -142,3 +146,9 @@ class Settings:
 
     def with_(self, **kw) -> "Settings":
         return replace(self, **kw)
+
+
+def dynamics_settings(**kw) -> Settings:
+    """:class:`Settings` of a dynamic experiment: ``kw`` over the defaults, the engine
+    :data:`DYNAMICS_ENGINE` unless ``kw`` names one."""
+    return Settings(**{"engine": DYNAMICS_ENGINE, **kw})

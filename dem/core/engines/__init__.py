@@ -24,6 +24,19 @@ def engine_installed(name: str) -> bool:
     return name not in _MODULES or importlib.util.find_spec(_MODULES[name][0]) is not None
 
 
+def engine_package(name: str) -> str:
+    """The distribution whose version is engine ``name``'s (``compas_lmgc90`` for LMGC90)."""
+    return _MODULES.get(name, (name,))[0]
+
+
+def check_engine(name: str) -> None:
+    """Refuse in one line an unknown engine, or one whose optional package is not installed."""
+    if name not in _ENGINES:
+        raise ArchdemInputError(f"unknown engine {name!r}; available: {', '.join(available_engines())}")
+    if name in _MODULES:
+        require(*_MODULES[name])
+
+
 def get_engine(name: str) -> Engine:
     """A new backend instance of engine ``name`` (see :func:`available_engines`)."""
     if name not in _ENGINES:

@@ -372,7 +372,7 @@ def register(sub) -> None:
                    help="records (.AT2, .smc, ESM, CSV) matched to the site spectrum and shaken on the DEM")
     p.add_argument("--match-periods", default=None, metavar="LO,HI",
                    help="period range [s] of the records' match (default 0.2-2 x the limit state's period)")
-    add_engine_argument(p)
+    add_engine_argument(p, dynamics=True)
     p.add_argument("--workers", type=workers_option, default=None,
                    help="processes for the record runs (default: all cores, at most one per record)")
     p.add_argument("--report", default=None, metavar="FILE.html", help="write a one-page assessment with its figures "

@@ -17,7 +17,7 @@ from analytic.limit.limit_discrete import require_standing
 from analytic.limit.ties import Tie, tie_link
 from analytic.rocking.linkage import governing_four_bar
 from dem.core.model import Model, from_assembly
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.core.ties import tie_spec
 from dem.experiments.record.run import RecordRun, dem_verdict, run_records
 from specimens.blocks import DEFAULT_DENSITY, Assembly, discretise
@@ -76,7 +76,7 @@ def check_records(assembly: Assembly | Model, assessment: Assessment, site, reco
     lo, hi = period_range if period_range is not None else match_period_range(assessment, site)
     motions = [r if isinstance(r, SampledMotion) else read_record(r) for r in records]
     matched = [match_record(baseline_correct(m), site, (lo, hi)) for m in motions]
-    settings = settings or Settings()
+    settings = settings or dynamics_settings()
     runs = run_records(assembly, [m.motion for m in matched], assessment.curve.e_star, settings,
                        workers=workers or min(len(matched), os.cpu_count() or 1))
     return RecordCheck((lo, hi), tuple(matched), tuple(runs), dem_verdict(runs, assessment.curve.d0_star, du_star),

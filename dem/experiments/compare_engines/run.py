@@ -13,6 +13,7 @@ import math
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
+from dem.core.provenance import engine_version
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.check import TiltCheck, check_result, reference_lp
@@ -23,7 +24,9 @@ from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_J
 from specimens.errors import ArchdemInputError
 from specimens.processes import die_with_parent
 
-FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)}
+#: Friction cases (joint, base): no sliding; the reference frictions; the joints' own on a base that does not slide.
+FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE),
+             "joints": (REFERENCE_MU_JOINT, NO_SLIDING_MU)}
 
 
 @dataclass(frozen=True)
@@ -73,13 +76,6 @@ class ComparisonRow:
         return d
 
 
-def _engine_version(name: str) -> str:
-    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.core.provenance import package_version
-
-    return package_version(name)
-
-
 def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> TiltCheck:
     """The hold-protocol tilt test of ``model`` with ``settings.engine`` beside the LP of its blocks
     (``assembly``: default the model's own)."""
@@ -107,7 +103,7 @@ def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] =
         res = {e: check_result(tilt(model, base.with_(engine=e, mu_joint=mj, mu_base=mb), protocol, assembly=asm), asm, lp)
                for e in engines}
         rows.append(ComparisonRow(sid, config, f, mj, mb, float(lp.lam), tuple(tuple(h) for h in lp.hinges), res,
-                                  {e: _engine_version(e) for e in engines}))
+                                  {e: engine_version(e) for e in engines}))
     return rows
 
 

@@ -232,7 +232,7 @@ def register(sub) -> None:
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
     p.add_argument("--solver-iterations", type=int, default=None,
                    help=f"solver iterations per step (default {default_of(Settings, 'solver_iterations')})")
-    add_engine_argument(p)
+    add_engine_argument(p, dynamics=True)
     add_contact_law_arguments(p)
     p.add_argument("--no-deterministic", action="store_true",
                    help="skip the nominal structure's threshold beside each sine curve")

@@ -26,7 +26,7 @@ import numpy as np
 from analytic.motions.inputs import SampledMotion, SinePulse
 from analytic.motions.records import baseline_correct, read_record
 from dem.core.model import from_assembly, single_block
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, shake
 from dem.experiments.tilt.case import arch_from_params, arch_params
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
@@ -110,7 +110,7 @@ def _model(structure: dict, pert: dict, seed: int, k: int):
 
 
 def _friction(settings: dict, pert: dict, seed: int, k: int) -> dict:
-    base = Settings(**settings)
+    base = dynamics_settings(**settings)
     cov = pert["friction_cov"]
     if cov == 0:
         return {}
@@ -159,7 +159,7 @@ def shake_case(case: dict) -> dict:
     of the realisation and ``wall_s``."""
     seed, k = int(case["seed"]), int(case["realisation"])
     model = _model(case["structure"], case["perturbation"], seed, k)
-    settings = Settings(**{**case["settings"], **_friction(case["settings"], case["perturbation"], seed, k)})
+    settings = dynamics_settings(**{**case["settings"], **_friction(case["settings"], case["perturbation"], seed, k)})
     t0 = time.perf_counter()
     r = shake(model, _motion(case["motion"]), settings, ShakeProtocol(), friction_work=False)
     return {"collapsed": bool(r.collapsed), "mode": str(r.mode),

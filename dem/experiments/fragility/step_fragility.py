@@ -52,7 +52,7 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
     pert = Perturbation(edge_loss_sd=DEFAULT_EDGE_LOSS_SD, friction_cov=DEFAULT_FRICTION_COV)
     rows, figures = [], []
     for s in specs:
-        settings = {"engine": ctx.engine, **ctx.law_of(s)}
+        settings = {"engine": ctx.dynamics_engine, **ctx.law_of(s)}
         model = as_model(s, config=ctx.config)
         lam = static_onset(model, Settings(**settings))
         groups, det = [], {}

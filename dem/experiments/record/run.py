@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, shake
 from specimens.processes import pool_worker_init
 
@@ -50,7 +50,7 @@ def run_records(target, motions, e_star: float, settings: Settings | None = None
                 protocol: ShakeProtocol | None = None, workers: int = 1) -> list[RecordRun]:
     """Shake ``target`` (an assembly or model) with each of ``motions`` (matched, scaled records) in
     ``workers`` processes; results in input order."""
-    jobs = [(target, m, settings or Settings(), protocol or ShakeProtocol(), e_star) for m in motions]
+    jobs = [(target, m, settings or dynamics_settings(), protocol or ShakeProtocol(), e_star) for m in motions]
     if workers <= 1 or len(jobs) <= 1:
         return [_one(j) for j in jobs]
 

@@ -65,7 +65,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
-        r = threshold(model, 1.0, Settings(engine=ctx.engine, **ctx.law_of(s)), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
+        r = threshold(model, 1.0, Settings(engine=ctx.dynamics_engine, **ctx.law_of(s)), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
                       tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
                       motion_fn=RecordAtPGA(str(path), t0, t1))
         a = r.amplitude_g

@@ -7,7 +7,7 @@ from typing import Sequence
 
 from analytic.rocking.domain import failure_domain as linkage_domain
 from dem.core.model import as_model
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake import thresholds
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.errors import ArchdemInputError
@@ -16,13 +16,16 @@ from specimens.errors import ArchdemInputError
 def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "glued", mu_joint: float | None = None,
                        mu_base: float | None = None, a_max_ratio: float = 6.0, scan_ratio: float = 1.15,
                        tol: float = 0.01, workers: int | None = None, disc_kw: dict | None = None,
-                       settings=None, protocol=None, scheduler: str | None = None, joints: dict | None = None) -> dict:
+                       settings=None, protocol=None, scheduler: str | None = None, joints: dict | None = None,
+                       engine: str | None = None, dt: float | None = None) -> dict:
     """DEM failure domain of ``arch`` (one-cycle plain sines at ``freqs`` [Hz]).
 
     The amplitude scan runs from the static onset ``lambda g`` (LP with the same friction;
     nothing moves below it) to ``a_max_ratio lambda g``. Returns the dict of
     :func:`dem.experiments.shake.thresholds.failure_domain` plus ``id``, ``lambda``, ``config``, ``mu_joint``, ``mu_base``.
-    ``joints``: contact-law fields of :class:`dem.core.settings.Settings` (rigid if None), unless ``settings`` is given.
+    ``joints``: contact-law fields of :class:`dem.core.settings.Settings` (rigid if None); ``engine``
+    and ``dt`` [s]: the physics engine and its time step (defaults: the settings'); all three unless
+    ``settings`` is given.
     """
     mu_j = REFERENCE_MU_JOINT if mu_joint is None else float(mu_joint)
     mu_b = REFERENCE_MU_BASE if mu_base is None else float(mu_base)
@@ -30,10 +33,12 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
     lam = thresholds.static_onset(model, Settings(mu_joint=mu_j, mu_base=mu_b))
     if not (math.isfinite(lam) and lam > 0):
         raise ArchdemInputError(f"{label}: the arch has no positive static collapse multiplier (lambda = {lam})")
-    st = settings or Settings(mu_joint=mu_j, mu_base=mu_b, **(joints or {}))
+    run = {k: v for k, v in (("engine", engine), ("dt", dt)) if v is not None}
+    st = settings or dynamics_settings(mu_joint=mu_j, mu_base=mu_b, **(joints or {}), **run)
     out = thresholds.failure_domain(model, freqs, st, protocol, workers=workers, a_min_g=lam, a_max_g=a_max_ratio * lam,
                          scan_ratio=scan_ratio, tol=tol, scheduler=scheduler)
     out.update({"id": label, "lambda": lam, "config": config, "mu_joint": mu_j, "mu_base": mu_b,
+                "physics_engine": st.engine, "dt": st.dt,
                 "input": "sine0", "a_range_g": [lam, a_max_ratio * lam]})
     return out
 

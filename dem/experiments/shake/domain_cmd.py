@@ -24,6 +24,8 @@ from dem.common.options import (
     print_json,
     workers_option,
 )
+from dem.core.engines import available_engines, check_engine
+from dem.core.settings import DYNAMICS_ENGINE, Settings
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.step_shake import SHAKE_FREQS
 from specimens.blocks import DEFAULT_DENSITY, discretise
@@ -130,8 +132,9 @@ def add_linkage_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def _run_domain(args: argparse.Namespace) -> int:
-    if args.engine == "dem":
+    if args.engine != "analytic":
         return int(dem_domain(args) or 0)
+    option_used(args, "dt", False, "it is the DEM's time step (--engine dem or a named engine)")
     if args.scheduler:
         raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
     if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
@@ -201,7 +204,11 @@ def register(sub) -> None:
                    help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (with --engine dem)")
-    p.add_argument("--engine", choices=("analytic", "dem"), default="analytic", help="analytic linkage or DEM")
+    p.add_argument("--engine", choices=("analytic", "dem", *available_engines()), default="analytic",
+                   help=f"analytic linkage, or the DEM: 'dem' runs the shakes' default engine ({DYNAMICS_ENGINE}), "
+                        "or name one")
+    p.add_argument("--dt", type=float, default=None,
+                   help=f"DEM: time step [s] (default {default_of(Settings, 'dt'):g})")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
                    help="DEM: discrete configuration")
     p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None,
@@ -226,6 +233,9 @@ def dem_domain(args: argparse.Namespace) -> int:
     freqs = parse_grid(args.freq) if args.freq is not None else list(SHAKE_FREQS)
     if args.plot:
         figure_file(args.plot)
+    if getattr(args, "engine", "dem") == "dem":
+        args.engine = DYNAMICS_ENGINE
+    check_engine(args.engine)
     label, arch = arch_from_args(args)
     law = contact_law_settings(args, getattr(args, "id", None))
     dem_a_max = default_of(dem_failure_domain, "a_max_ratio")
@@ -235,7 +245,8 @@ def dem_domain(args: argparse.Namespace) -> int:
     res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
                              getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
                              workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
-                             scheduler=getattr(args, "scheduler", None), joints=law or None)
+                             scheduler=getattr(args, "scheduler", None), joints=law or None, engine=args.engine,
+                             dt=getattr(args, "dt", None))
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.shake.figure import plot_domain_over_analytic
@@ -251,7 +262,8 @@ def dem_domain(args: argparse.Namespace) -> int:
             {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")}
             for t in res["thresholds"]]})
         return 0
-    print(f"{label}  DEM ({res['config']}, mu {res['mu_joint']:g}/{res['mu_base']:g})  static lambda {res['lambda']:.4f}")
+    print(f"{label}  DEM ({res['physics_engine']}, dt {res['dt']:g} s, {res['config']}, mu {res['mu_joint']:g}/"
+          f"{res['mu_base']:g})  static lambda {res['lambda']:.4f}")
     for t in res["thresholds"]:
         a = "none up to %.3f g" % res["a_range_g"][1] if t["amplitude_g"] is None else f"{t['amplitude_g']:.4f} g"
         above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in t["survival_bands_above"])

@@ -42,7 +42,7 @@ from analytic.motions.inputs import GroundMotion
 from dem.core import detect
 from dem.core.loads import GroundShake
 from dem.core.model import Model, as_model
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.core.simulate import SimResult, simulate
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
@@ -194,7 +194,7 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 
-    settings = settings or Settings()
+    settings = settings or dynamics_settings()
     proto = protocol or ShakeProtocol()
     st = shake_settings(settings, proto)
     duration = proto.total_duration(motion)

@@ -115,7 +115,7 @@ def add_shake_arguments(p: argparse.ArgumentParser) -> None:
     add_friction_arguments(p)
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
     p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
-    add_engine_argument(p)
+    add_engine_argument(p, dynamics=True)
     add_contact_law_arguments(p)
     p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),
                    help=f"zero-acceleration tail after the motion [s], up to {MAX_SIMULATED_S:g} "

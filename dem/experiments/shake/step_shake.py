@@ -48,7 +48,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         c = ctx.contact_of(s)
         dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
-                                 settings=Settings(engine=ctx.engine, **ctx.law_of(s)), disc_kw={"contact": c} if c != 1.0 else None,
+                                 settings=Settings(engine=ctx.dynamics_engine, **ctx.law_of(s)), disc_kw={"contact": c} if c != 1.0 else None,
                                  a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01)
         ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))
         fb, tb = _lowest_threshold(ana.get("four-bar")), _lowest_threshold(ana.get("two-bar"))
@@ -84,8 +84,8 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     return {
         "summary": ctx.joints_text() + " " + "Plain one-cycle sine pulses; least collapsing amplitude by amplitude scan then bisection of the lowest "
                    "collapsing bracket; four-bar (minimised layout) and two-bar thresholds for the same input. "
-                   "Measured sensitivity to the engine's numerics (benchmarks/shake_convergence.py): within 2.5 % "
-                   "at 2-4 Hz, 14 % to a factor 2.2 at 6 Hz (docs/validation.md#10-shake-thresholds), so ratios above 4 Hz are ranges.",
+                   f"Engine: {ctx.dynamics_engine}. Which features of these thresholds belong to the arch and which to "
+                   "the engine (three engines, two time steps): docs/validation.md#19-three-engine-shake-study.",
         "tables": [{"name": "shake", "title": "Shake-table thresholds [g]", "csv": "shake/shake.csv"}],
         "figures": figures, "findings": findings,
     }
@@ -102,7 +102,7 @@ def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list
     model = from_assembly(discretise(spec.arch, config=ctx.config, contact=ctx.contact_of(spec)), name=spec.id)
     out = []
     for what, a_g in (("survival", t["bracket_g"][0]), ("collapse", t["bracket_g"][1])):
-        res = shake(model, SinePulse(a_g * G, t["freq"]), Settings(engine=ctx.engine, **ctx.law_of(spec)), label=spec.id)
+        res = shake(model, SinePulse(a_g * G, t["freq"]), Settings(engine=ctx.dynamics_engine, **ctx.law_of(spec)), label=spec.id)
         png = save_shake_figure(res, d / f"history_{spec.id}_{t['freq']:g}Hz_{what}.png")
         out.append({"path": f"shake/{png.name}",
                     "caption": f"{spec.id}, {t['freq']:g} Hz sine at {a_g:.3f} g ({what} side of the threshold): "

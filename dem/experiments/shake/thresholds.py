@@ -15,9 +15,9 @@ bisection may return either edge of a survival window. :func:`threshold` therefo
 3. reports every band found by the scan (survival / collapse), its edges at the geometric middle
    of the scan bracket (resolution ``scan_ratio``) except the bisected first threshold.
 
-How far a threshold is a number of the arch and not of the engine's numerics: robust at 2-4 Hz,
-not converged at 6 Hz in either engine, so read thresholds above ~4 Hz as a range
-(docs/validation.md#10-shake-thresholds).
+How far a threshold is a number of the arch and not of the engine's numerics: the default engine
+(MuJoCo) holds its thresholds under halving the time step and meets LMGC90's; PyBullet's move with
+its step from 4 Hz on (docs/validation.md#19-three-engine-shake-study).
 
 A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
 (:class:`analytic.motions.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
@@ -37,7 +37,7 @@ import numpy as np
 from analytic.motions.inputs import GroundMotion, SinePulse
 from analytic.search import Bracket, search
 from dem.core.model import Model, as_model
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, collapses
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
@@ -257,7 +257,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
         raise ArchdemInputError(f"frequency must be a positive number of Hz, got {freq!r}")
     if not (0 < tol < 0.5):
         raise ArchdemInputError(f"bisection tolerance must be in (0, 0.5), got {tol!r}")
-    settings = settings or Settings()
+    settings = settings or dynamics_settings()
     protocol = protocol or ShakeProtocol()
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()
@@ -309,7 +309,7 @@ def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | No
     freqs = [float(f) for f in freqs]
     if not freqs or not all(math.isfinite(f) and f > 0 for f in freqs):
         raise ArchdemInputError("the frequency grid must contain positive numbers")
-    settings = settings or Settings()
+    settings = settings or dynamics_settings()
     protocol = protocol or ShakeProtocol()
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()

@@ -20,6 +20,7 @@ from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 from analytic.motions.inputs import SinePulse
 from dem.campaign.runner import STEPS, default_steps, run_campaign
 from dem.common.campaign import CampaignContext
+from dem.core.settings import DYNAMICS_ENGINE
 from dem.experiments.friction_map.step_map import map_plan
 from dem.experiments.record.step_record import record_plan
 from dem.experiments.shake.step_shake import shake_plan
@@ -441,8 +442,8 @@ def test_shake_table_holds_the_stand_in_thresholds_against_the_four_bar(campaign
         (lo, hi), = [tuple(float(x) for x in b.split("-")) for b in r["survival_bands_above"].split()]
         assert window[0] * truth / SCAN_RATIO <= lo <= window[0] * truth * SCAN_RATIO
         assert window[1] * truth / SCAN_RATIO <= hi <= window[1] * truth * SCAN_RATIO
-    for run in stand.runs:  # the runs used the reference friction and the campaign's engine
-        assert (run[4].mu_joint, run[4].mu_base, run[4].engine) == (REFERENCE_MU_JOINT, REFERENCE_MU_BASE, "pybullet")
+    for run in stand.runs:  # the runs used the reference friction and the campaign's engine of the shakes
+        assert (run[4].mu_joint, run[4].mu_base, run[4].engine) == (REFERENCE_MU_JOINT, REFERENCE_MU_BASE, DYNAMICS_ENGINE)
 
 
 def test_shake_findings_agree_with_the_table(campaign):

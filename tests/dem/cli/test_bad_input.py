@@ -27,6 +27,8 @@ from dem.cli import main
     (["domain", "Sh06-Sd015", "--kn", "1e8"], "are the DEM's joints (--engine dem)"),
     (["domain", "Sh06-Sd015", "--youngs", "1e9"], "are the DEM's joints (--engine dem)"),
     (["domain", "Sh06-Sd015", "--engine", "dem", "--kn", "inf"], "kn must be a number >= 0, got inf"),
+    (["domain", "Sh06-Sd015", "--dt", "1e-4"], "--dt does nothing here: it is the DEM's time step"),
+    (["domain", "Sh06-Sd015", "--engine", "mujoco", "--dt", "1e-9"], "time step dt = 1e-09 s is too small"),
     (["map", "--kn", "nan"], "kn must be a number >= 0, got nan"),
     (["map", "--joints", "table-5.1"], "not 'several specimens'"),
     (["campaign", "--kn", "1e8", "--engine", "mujoco", "--out", "c"], "need --damping-beta or --damping-xi"),

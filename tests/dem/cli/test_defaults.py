@@ -23,8 +23,9 @@ def _lib():
     from analytic.motions.spectra import ntc2018
     from analytic.rocking.domain import failure_domain
     from dem.common.campaign import CampaignContext
-    from dem.core.settings import Settings
+    from dem.core.settings import DYNAMICS_ENGINE, Settings
     from dem.experiments.compare_engines.run import compare
+    from dem.experiments.compare_engines.shake import study_cases
     from dem.experiments.fragility.run import DEFAULT_FRICTION_COV
     from dem.experiments.friction_map.run import catalogue_map
     from dem.experiments.shake.animation import animate
@@ -45,12 +46,13 @@ def _lib():
                      "effective_thickness": default_of(analyse, "effective_thickness"),
                      "min_spacing": default_of(analyse, "min_spacing")},
         "campaign": {"config": default_of(CampaignContext, "config"), "engine": s.engine,
+                     "dynamics_engine": default_of(CampaignContext, "dynamics_engine"),
                      "contact": default_of(CampaignContext, "contact")},
         "calibrate": {"out": str(CALIBRATION_FILE)},
         "assess": {"soil": default_of(ntc2018, "soil"), "topography": default_of(ntc2018, "topography"),
                    "damping": default_of(ntc2018, "damping"), "FC": default_of(assess, "FC"),
                    "q": default_of(assess, "q"), "limit_state": default_of(assess, "limit_state"),
-                   "building_damping": default_of(Height, "damping1"), "engine": s.engine,
+                   "building_damping": default_of(Height, "damping1"), "engine": DYNAMICS_ENGINE,
                    **{f"frp_{k}": default_of(Strips, k) for k in ("fibre", "exposure", "application")}},
         "tilt": {**sim, "protocol": tp.kind, "start": tp.start},
         "map": {"config": default_of(catalogue_map, "config"), "mu": default_of(catalogue_map, "mus"),
@@ -58,15 +60,19 @@ def _lib():
                 "tol": MAP_TILT_TOL, "engine": s.engine, "contact": default_of(catalogue_map, "contact")},
         "domain": {"amax": default_of(failure_domain, "a_max_ratio"), "scan": default_of(failure_domain, "n_scan"),
                    "tol": default_of(failure_domain, "tol"), "config": default_of(dem_failure_domain, "config")},
-        "shake": {**sim, "tail": sp.tail, "load": sp.load},
-        "threshold": {**sim, "tail": sp.tail, "load": sp.load,
+        "shake": {**sim, "engine": DYNAMICS_ENGINE, "tail": sp.tail, "load": sp.load},
+        "threshold": {**sim, "engine": DYNAMICS_ENGINE, "tail": sp.tail, "load": sp.load,
                       "scan_ratio": default_of(threshold, "scan_ratio"), "tol": default_of(threshold, "tol")},
         "animate": {"fps": default_of(animate, "fps"), "frames": default_of(animate, "max_frames")},
         "fragility": {"config": default_of(discretise, "config"), "mu_joint": s.mu_joint, "mu_base": s.mu_base,
-                      "engine": s.engine, "friction_cov": DEFAULT_FRICTION_COV},
+                      "engine": DYNAMICS_ENGINE, "friction_cov": DEFAULT_FRICTION_COV},
         "modes": {"config": default_of(discretise, "config"), "springs": default_of(modes, "springs"),
                   "poisson": POISSON},
         "compare-engines": {"config": default_of(compare, "config"), "engines": ",".join(default_of(compare, "engines"))},
+        "compare-shake": {"config": default_of(study_cases, "config"),
+                          **{dest: ",".join(v if isinstance(v, str) else f"{v:g}" for v in default_of(study_cases, k))
+                             for dest, k in (("specimens", "ids"), ("engines", "engines"), ("freq", "freqs"),
+                                             ("steps", "steps"), ("friction", "frictions"))}},
     }
 
 
@@ -88,7 +94,7 @@ ARGV = {
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
     "threshold": ["Sh02-Sd015", "--sine", "4"], "fragility": ["Sh02-Sd015", "--realizations", "1"],
     "modes": ["Sh02-Sd015", "--kn", "1e8"],
-    "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [],
+    "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [], "compare-shake": [],
 }
 
 
@@ -185,7 +191,7 @@ def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     def fake(label, arch, freqs, config, mu_joint, mu_base, **kw):
         seen.update(freqs=freqs, config=config, mu_joint=mu_joint, mu_base=mu_base, **kw)
         return {"config": config, "mu_joint": REFERENCE_MU_JOINT, "mu_base": REFERENCE_MU_BASE, "lambda": 0.3,
-                "thresholds": [], "a_range_g": [0.3, 1.8]}
+                "thresholds": [], "a_range_g": [0.3, 1.8], "physics_engine": "pybullet", "dt": 5e-4}
 
     monkeypatch.setattr(dd, "dem_failure_domain", fake)
     assert main(["domain", "Sh02-Sd015", "--engine", "dem"]) == 0

@@ -97,12 +97,12 @@ def test_shake_record(tmp_path, capsys, monkeypatch):
 
 
 def test_threshold_json(tmp_path, capsys):
-    rc = main(["threshold", *SMALL, "--sine", "5", "--json", "--a-max", "1.2", "--scan-ratio", "1.4",
+    rc = main(["threshold", *SMALL, "--sine", "5", "--json", "--a-max", "3", "--scan-ratio", "1.4",
                "--tol", "0.05", "--workers", "1", "--tail", "0.5"])
     assert rc == 0
     d = json.loads(capsys.readouterr().out)
     assert d["lambda"] == pytest.approx(_lp_lambda(), rel=1e-12)  # the static onset: the LP of the same blocks
-    assert d["amplitude_g"] is not None, "no collapse found up to 1.2 g"
+    assert d["amplitude_g"] is not None, "no collapse found up to 3 g"
     lo, hi = d["bracket_g"]
     assert hi == d["amplitude_g"] and hi / lo - 1 <= 0.05
     # both ends of the bracket were simulated, with the outcomes that make it a threshold
@@ -121,7 +121,7 @@ def test_shake_and_threshold_take_the_effective_contact(tmp_path, capsys):
     assert main(["shake", *SMALL, "--contact", "0.8", "--sine", "4", "--amplitude", "0.1", "--tail", "0.2",
                  "--json", "--out", str(tmp_path)]) == 0
     assert json.loads(capsys.readouterr().out)["contact"] == 0.8
-    assert main(["threshold", *SMALL, "--contact", "0.8", "--sine", "5", "--json", "--a-max", "1.2",
+    assert main(["threshold", *SMALL, "--contact", "0.8", "--sine", "5", "--json", "--a-max", "3",
                  "--scan-ratio", "1.4", "--tol", "0.05", "--workers", "1", "--tail", "0.5"]) == 0
     d = json.loads(capsys.readouterr().out)
     relieved = discretise(PointedArch.from_ratios(0.6, 0.25, 0.2), n_voussoirs=2, config="glued", contact=0.8)

@@ -1,0 +1,237 @@
+"""The engines' shake study: the least collapsing amplitude of a one-cycle sine and every band above
+it, per specimen, frequency, engine, time step and friction case, one case per threshold search in a
+resumable study file (:mod:`dem.studies.sweep`); then each feature classified as common to the
+engines or not (:func:`features`).
+
+A case is the search of :func:`dem.experiments.shake.thresholds.threshold` over the DEM domain's
+amplitudes (from the static onset ``lambda g`` to ``A_MAX_RATIO lambda g``, scan ratio 1.15, the
+first collapse bisected to 1 %). Its ``step`` multiplies the engine's own integration step
+(:func:`integration_step`): x1 runs the defaults; x0.5 halves what the engine integrates with (the
+protocol step ``dt`` of PyBullet; MuJoCo and LMGC90 cut ``dt`` into steps of at most 0.25 ms, so
+theirs is halved by a ``dt`` of 0.125 ms). The friction cases
+are those of :data:`dem.experiments.compare_engines.run.FRICTIONS`; the study's are "joints" (the
+joints' own friction on a base that does not slide: joint sliding is the question) and "none" (no
+sliding anywhere: rocking only). docs/validation.md#19-three-engine-shake-study has the figures.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+import numpy as np
+
+from dem.core.provenance import engine_version
+from dem.core.engines.lmgc90_engine import LMGC90Options
+from dem.core.engines.mujoco_engine import DEFAULT_OPTIONS as MUJOCO_OPTIONS
+from dem.core.model import from_assembly
+from dem.core.settings import Settings
+from dem.experiments.compare_engines.run import FRICTIONS
+from dem.experiments.shake.thresholds import static_onset, threshold
+from specimens.blocks import discretise
+from specimens.catalogue import CATALOGUE, get_specimen
+from specimens.errors import ArchdemInputError
+
+STUDY_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # [Hz], the shake-table tests' range
+STUDY_SPECIMENS = tuple(s.id for s in CATALOGUE if round(s.arch.Sd, 3) in (0.15, 0.20))  # the specimens shaken in the laboratory
+STUDY_FRICTIONS = ("joints", "none")
+STUDY_STEPS = (1.0, 0.5)  # integration steps as multiples of the engine's default: the default and its half
+A_MAX_RATIO = 6.0  # top of the amplitude scan / (lambda g): the DEM domain's
+SCAN_RATIO, TOL = 1.15, 0.01  # scan step and bisection tolerance of the first collapse
+#: Two engines' readings of a feature agree when they differ by at most one scan step: band edges
+#: are known to the scan's resolution only.
+AGREE_RATIO = SCAN_RATIO
+
+
+def integration_step(engine: str) -> float:
+    """The step [s] ``engine`` integrates with at the default protocol step: PyBullet steps by ``dt``,
+    MuJoCo and LMGC90 by equal parts of it of at most their ``max_dt``."""
+    cap = {"mujoco": MUJOCO_OPTIONS.max_dt, "lmgc90": LMGC90Options().max_dt}.get(engine, math.inf)
+    return min(Settings().dt, cap)
+
+
+def case_dt(engine: str, step: float) -> float:
+    """Protocol step ``dt`` [s] that gives ``engine`` ``step`` x its own integration step (the default
+    ``dt`` at x1 and above)."""
+    return Settings().dt * step if step >= 1 else step * integration_step(engine)
+
+
+def study_attrs(config: str = "glued") -> dict:
+    """What every case of a study shares (checked when a study is resumed)."""
+    return {"study": "engines-shake", "config": config, "a_max_ratio": A_MAX_RATIO, "scan_ratio": SCAN_RATIO,
+            "tol": TOL, "input": "one-cycle sine"}
+
+
+def study_cases(ids=STUDY_SPECIMENS, freqs=STUDY_FREQS, engines=("pybullet", "mujoco", "lmgc90"),
+                steps=STUDY_STEPS, frictions=STUDY_FRICTIONS, config: str = "glued") -> list[dict]:
+    """One case per (specimen, friction, step, frequency, engine), in that nesting order."""
+    for f in frictions:
+        if f not in FRICTIONS:
+            raise ArchdemInputError(f"friction case must be one of {', '.join(FRICTIONS)}, got {f!r}")
+    for s in steps:
+        if not (0 < s <= 4):
+            raise ArchdemInputError(f"a time step factor must be in (0, 4], got {s!r}")
+    return [{"id": sid, "config": config, "friction": fr, "mu_joint": FRICTIONS[fr][0], "mu_base": FRICTIONS[fr][1],
+             "dt": case_dt(e, float(s)), "step": float(s), "freq": float(f), "engine": e}
+            for sid in ids for fr in frictions for s in steps for f in freqs for e in engines]
+
+
+def shake_case(case: dict) -> dict:
+    """Case function: the threshold search of one case (see the module docstring), one process."""
+    model = from_assembly(discretise(get_specimen(case["id"]).arch, config=case["config"]), name=case["id"])
+    st = Settings(engine=case["engine"], dt=case["dt"], mu_joint=case["mu_joint"], mu_base=case["mu_base"])
+    lam = static_onset(model, st)
+    r = threshold(model, case["freq"], st, a_min_g=lam, a_max_g=A_MAX_RATIO * lam, scan_ratio=SCAN_RATIO, tol=TOL,
+                  workers=1)
+    runs = sorted(r.runs, key=lambda o: o.amplitude_g)
+    return {"lambda": lam, "a_max_g": A_MAX_RATIO * lam,
+            "amplitude_g": math.nan if r.amplitude_g is None else r.amplitude_g,
+            "mode": r.mode, "phase": r.phase or "", "n_sims": r.n_sims, "search_wall_s": r.wall_s,
+            "run_amplitude_g": np.array([o.amplitude_g for o in runs]),
+            "run_collapsed": np.array([o.collapsed for o in runs]),
+            "run_mode": [o.mode or "-" for o in runs],
+            "engine_version": engine_version(case["engine"])}
+
+
+def bands(res: dict) -> list[dict]:
+    """The case's bands from its runs (sorted by amplitude): ``from_g``/``to_g`` (edges at the
+    geometric middle of the runs either side, the first collapse at its bisected amplitude),
+    ``collapse``, ``modes`` (of the collapsing runs inside, most frequent first), ``top`` (reaches
+    the scan's top)."""
+    a, c, m = np.asarray(res["run_amplitude_g"]), np.asarray(res["run_collapsed"], bool), list(res["run_mode"])
+    first = res["amplitude_g"]
+    out: list[dict] = []
+    for k in range(len(a)):
+        if out and out[-1]["collapse"] == bool(c[k]):
+            out[-1]["to_g"] = float(a[k])
+            out[-1]["_modes"].append(m[k])
+            continue
+        edge = float(a[k]) if k == 0 else (float(first) if (c[k] and not any(b["collapse"] for b in out)
+                                                            and math.isfinite(first)) else math.sqrt(a[k - 1] * a[k]))
+        if out:
+            out[-1]["to_g"] = edge
+        out.append({"from_g": edge, "to_g": float(a[k]), "collapse": bool(c[k]), "_modes": [m[k]]})
+    for b in out:
+        modes = b.pop("_modes")
+        b["modes"] = [k for k, _ in Counter(modes).most_common()] if b["collapse"] else []
+        b["top"] = False
+    if out:
+        out[-1]["top"] = True
+    return out
+
+
+def feature_values(res: dict) -> dict:
+    """The features of one case: ``first`` (least collapsing amplitude [g], nan if none),
+    ``low_bands`` (collapse bands with survival above them: [from, to] each), ``survival_above``
+    (survival bands above the first collapse), ``upper_edge`` (lower end of the collapse band that
+    reaches the top of the scan, nan if the top survives)."""
+    bs = bands(res)
+    low = [[b["from_g"], b["to_g"]] for b in bs if b["collapse"] and not b["top"]]
+    surv = [[b["from_g"], b["to_g"]] for b in bs if not b["collapse"] and math.isfinite(res["amplitude_g"])
+            and b["from_g"] > res["amplitude_g"]]
+    upper = bs[-1]["from_g"] if bs and bs[-1]["collapse"] else math.nan
+    return {"first": res["amplitude_g"], "low_bands": low, "survival_above": surv, "upper_edge": upper}
+
+
+def _agree(values: list[float]) -> bool:
+    v = [x for x in values if math.isfinite(x)]
+    if len(v) != len(values):
+        return not v  # all absent agrees; some absent does not
+    return max(v) / min(v) <= AGREE_RATIO * (1 + 1e-9)
+
+
+def features(results: dict) -> dict:
+    """Classification of each feature of one (specimen, friction, frequency) across its engines.
+
+    ``results``: ``{(engine, step): case result}``. A feature is ``common`` when every engine at
+    every step shows it and their readings agree within :data:`AGREE_RATIO` (or none shows it),
+    ``engine-dependent`` when the engines differ at both steps, ``step-dependent`` when they would
+    agree taking only the finer step of each engine but not at both. Returns
+    ``{feature: {"class": ..., "values": {"engine@step": value}}}``; the band features are compared
+    by presence and by the lower end of the first such band."""
+    fv = {k: feature_values(r) for k, r in results.items()}
+    out = {}
+    for name, get in (("first threshold", lambda f: f["first"]),
+                      ("low collapse band", lambda f: f["low_bands"][0][0] if f["low_bands"] else math.nan),
+                      ("survival band above", lambda f: f["survival_above"][0][0] if f["survival_above"] else math.nan),
+                      ("upper edge", lambda f: f["upper_edge"])):
+        vals = {f"{e}@{s:g}": get(f) for (e, s), f in fv.items()}
+        finest = {}
+        for (e, s), f in fv.items():
+            if e not in finest or s < finest[e][0]:
+                finest[e] = (s, get(f))
+        if _agree(list(vals.values())):
+            cls = "common"
+        elif len(finest) > 1 and _agree([v for _, v in finest.values()]):
+            cls = "step-dependent"
+        else:
+            cls = "engine-dependent"
+        out[name] = {"class": cls, "values": vals}
+    return out
+
+
+def _group_key(p: dict) -> tuple:
+    return (p["id"], p["friction"], p["freq"])
+
+
+def case_rows(records) -> list[dict]:
+    """One row per finished case (study records of :func:`shake_case`): its parameters, the first
+    collapse, the bands as text (``0.73-0.82 C rocking``), the scanned range, cost."""
+    rows = []
+    for r in records:
+        if not r.ok:
+            continue
+        p, res = r.params, r.results
+        text = "; ".join(f"{b['from_g']:.3g}-{b['to_g']:.3g} {'C' if b['collapse'] else 'S'}"
+                         + (f" {'/'.join(b['modes'])}" if b["modes"] else "") for b in bands(res))
+        rows.append({"id": p["id"], "friction": p["friction"], "mu_joint": p["mu_joint"], "mu_base": p["mu_base"],
+                     "freq": p["freq"], "engine": p["engine"], "step": p["step"], "dt": p["dt"],
+                     "lambda": res["lambda"], "a_max_g": res["a_max_g"], "first_g": res["amplitude_g"],
+                     "mode": res["mode"], "bands": text, "n_sims": res["n_sims"], "wall_s": r.wall,
+                     "engine_version": res["engine_version"]})
+    return rows
+
+
+def classify(records) -> list[dict]:
+    """:func:`features` of every (specimen, friction, frequency) that more than one engine has
+    finished, in the records' order: ``id``, ``friction``, ``freq``, ``engines``, ``features``."""
+    groups: dict[tuple, dict] = {}
+    for r in records:
+        if r.ok:
+            groups.setdefault(_group_key(r.params), {})[(r.params["engine"], r.params["step"])] = r.results
+    out = []
+    for (sid, fr, f), res in groups.items():
+        engines = sorted({e for e, _ in res})
+        if len(engines) > 1:
+            out.append({"id": sid, "friction": fr, "freq": f, "engines": engines, "features": features(res)})
+    return out
+
+
+def class_counts(classified: list[dict]) -> dict:
+    """``{friction: {feature: {class: count}}}`` over the classified groups."""
+    out: dict = {}
+    for g in classified:
+        for name, v in g["features"].items():
+            c = out.setdefault(g["friction"], {}).setdefault(name, {})
+            c[v["class"]] = c.get(v["class"], 0) + 1
+    return out
+
+
+def pairwise(records, step: float = 1.0) -> dict:
+    """How often two engines agree, at time step ``step`` (x the default): ``{"a/b": {feature:
+    [agreeing groups, groups both ran]}}`` over the (specimen, friction, frequency) groups, with the
+    rule of :func:`features` (the same reading within :data:`AGREE_RATIO`, or both without it)."""
+    groups: dict[tuple, dict] = {}
+    for r in records:
+        if r.ok and r.params["step"] == step:
+            groups.setdefault(_group_key(r.params), {})[r.params["engine"]] = feature_values(r.results)
+    getters = {"first threshold": lambda f: f["first"],
+               "low collapse band": lambda f: f["low_bands"][0][0] if f["low_bands"] else math.nan,
+               "upper edge": lambda f: f["upper_edge"]}
+    engines = sorted({e for g in groups.values() for e in g})
+    out: dict = {}
+    for i, a in enumerate(engines):
+        for b in engines[i + 1:]:
+            both = [g for g in groups.values() if a in g and b in g]
+            out[f"{a}/{b}"] = {name: [sum(_agree([get(g[a]), get(g[b])]) for g in both), len(both)]
+                               for name, get in getters.items()}
+    return out

@@ -1,0 +1,121 @@
+"""The engines' shake study: bands and features from runs (hand-made outcomes), the classification
+rules, one real case and study through the command line, and its input errors."""
+import math
+
+import numpy as np
+import pytest
+
+from dem.experiments.compare_engines.shake import (
+    AGREE_RATIO,
+    STUDY_SPECIMENS,
+    bands,
+    case_dt,
+    class_counts,
+    feature_values,
+    features,
+    study_cases,
+)
+
+
+def _res(first, runs):
+    """A case result from (amplitude, collapsed, mode) runs."""
+    a, c, m = zip(*runs)
+    return {"amplitude_g": first, "run_amplitude_g": np.array(a), "run_collapsed": np.array(c), "run_mode": list(m)}
+
+
+# survival to 0.7, collapse (rocking) to 0.8, survival to 1.2, collapse (sliding, then rocking) to the top
+BANDED = _res(0.7, [(0.5, False, "-"), (0.69, False, "-"), (0.7, True, "rocking"), (0.8, True, "rocking"),
+                    (0.9, False, "-"), (1.2, False, "-"), (1.3, True, "sliding"), (1.5, True, "sliding"),
+                    (1.7, True, "rocking")])
+
+
+def test_bands_edges_and_modes():
+    bs = bands(BANDED)
+    assert [b["collapse"] for b in bs] == [False, True, False, True]
+    assert bs[1]["from_g"] == 0.7  # the bisected first collapse is its own edge
+    assert bs[2]["from_g"] == pytest.approx(math.sqrt(0.8 * 0.9))  # other edges: geometric middle of the runs
+    assert bs[3]["from_g"] == pytest.approx(math.sqrt(1.2 * 1.3)) and bs[3]["to_g"] == 1.7
+    assert bs[1]["modes"] == ["rocking"] and bs[3]["modes"] == ["sliding", "rocking"] and bs[2]["modes"] == []
+    assert [b["top"] for b in bs] == [False, False, False, True]
+
+
+def test_feature_values():
+    f = feature_values(BANDED)
+    assert f["first"] == 0.7 and f["low_bands"] == [[0.7, pytest.approx(math.sqrt(0.72))]]
+    assert f["survival_above"] == [[pytest.approx(math.sqrt(0.72)), pytest.approx(math.sqrt(1.56))]]
+    assert f["upper_edge"] == pytest.approx(math.sqrt(1.56))
+    # nothing collapses: no first threshold, no upper edge
+    none = feature_values(_res(math.nan, [(0.5, False, "-"), (1.0, False, "-")]))
+    assert math.isnan(none["first"]) and math.isnan(none["upper_edge"]) and none["low_bands"] == []
+
+
+def test_classification_rules():
+    plain = _res(0.7, [(0.69, False, "-"), (0.7, True, "rocking"), (1.7, True, "rocking")])
+    # every engine and step has the low band, within one scan step: common
+    close = _res(0.75, [(0.5, False, "-"), (0.74, False, "-"), (0.75, True, "rocking"), (0.8, True, "rocking"),
+                        (0.9, False, "-"), (1.2, False, "-"), (1.3, True, "rocking"), (1.7, True, "rocking")])
+    f = features({("a", 1.0): BANDED, ("b", 1.0): close})
+    assert f["first threshold"]["class"] == "common" and f["low collapse band"]["class"] == "common"
+    # one engine without the band at its default step but with it at the finer one: step-dependent
+    f = features({("a", 1.0): BANDED, ("a", 0.5): BANDED, ("b", 1.0): plain, ("b", 0.5): close})
+    assert f["low collapse band"]["class"] == "step-dependent"
+    assert math.isnan(f["low collapse band"]["values"]["b@1"])  # absent
+    # absent at both steps of one engine: engine-dependent; first thresholds 2x apart: engine-dependent
+    far = _res(1.4, [(1.3, False, "-"), (1.4, True, "rocking"), (1.7, True, "rocking")])
+    f = features({("a", 1.0): BANDED, ("a", 0.5): BANDED, ("b", 1.0): far, ("b", 0.5): far})
+    assert f["low collapse band"]["class"] == "engine-dependent" and f["first threshold"]["class"] == "engine-dependent"
+    assert f["upper edge"]["class"] == "common"  # 1.25 and 1.4 g: within one scan step
+    assert 1.4 / math.sqrt(1.56) < AGREE_RATIO
+    counts = class_counts([{"friction": "none", "features": f}, {"friction": "none", "features": f}])
+    assert counts["none"]["first threshold"] == {"engine-dependent": 2}
+
+
+def test_study_cases_grid():
+    cases = study_cases(freqs=(2.0, 6.0), engines=("pybullet", "mujoco"))
+    assert len(cases) == len(STUDY_SPECIMENS) * 2 * 2 * 2 * 2
+    assert STUDY_SPECIMENS == ("Sh02-Sd015", "Sh02-Sd020", "Sh06-Sd015", "Sh06-Sd020", "Sh1-Sd015", "Sh1-Sd020")
+    joints = next(c for c in cases if c["friction"] == "joints" and c["step"] == 0.5)
+    assert (joints["mu_joint"], joints["mu_base"], joints["dt"]) == (0.577, 10.0, 2.5e-4)
+    # half the step each engine integrates with: PyBullet's dt; MuJoCo's 0.25 ms internal step
+    assert {c["engine"]: c["dt"] for c in cases if c["step"] == 0.5} == {"pybullet": 2.5e-4, "mujoco": 1.25e-4}
+    assert {c["dt"] for c in cases if c["step"] == 1.0} == {5e-4}
+    assert case_dt("lmgc90", 0.5) == 1.25e-4 and case_dt("pybullet", 2.0) == 1e-3
+
+
+@pytest.mark.slow
+def test_cli_one_case_each_engine_and_resume(tmp_path, capsys):
+    # a real search: the no-sliding 2 Hz threshold of Sh06-Sd015 lies between its static onset and
+    # the four-bar's; PyBullet and MuJoCo within one scan step of each other (measured 0.331 / 0.346 g)
+    from dem.cli import main
+
+    pytest.importorskip("mujoco", reason="the mujoco extra is not installed")
+    out = tmp_path / "s.h5"
+    argv = ["compare-shake", "--specimens", "Sh06-Sd015", "--engines", "pybullet,mujoco", "--freq", "2",
+            "--steps", "1", "--friction", "none", "--workers", "2", "--out", str(out), "--json"]
+    assert main(argv) == 0
+    import json
+
+    res = json.loads(capsys.readouterr().out)
+    firsts = {c["engine"]: c["first_g"] for c in res["cases"]}
+    lam = res["cases"][0]["lambda"]
+    assert all(lam < a < 0.45 for a in firsts.values())
+    (group,) = res["features"]
+    assert group["features"]["first threshold"]["class"] == "common"
+    assert (tmp_path / "s.csv").read_text().count("\n") == 3
+    # the study is never overwritten; a resume runs nothing new and reads the same
+    assert main(argv) == 2
+    assert main(["compare-shake", "--resume", str(out), "--json"]) == 0
+    again = json.loads(capsys.readouterr().out)
+    assert {c["engine"]: c["first_g"] for c in again["cases"]} == firsts
+
+
+@pytest.mark.parametrize("argv", [["--engines", "pybullet,nope"], ["--engines", "pybullet,pybullet"],
+                                  ["--friction", "some"], ["--steps", "0"], ["--freq", "-2"],
+                                  ["--specimens", "XX"], ["--workers", "0"]])
+def test_cli_bad_input_exits_2(argv, capsys, tmp_path):
+    from dem.cli import main
+
+    assert main(["compare-shake", *argv, "--out", str(tmp_path / "x.h5")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err
+    assert not list(tmp_path.iterdir())
