@@ -11,7 +11,7 @@ import argparse
 import math
 from pathlib import Path
 
-from dem.experiments.compare_engines.shake import bands, class_counts, classify, pairwise
+from dem.experiments.compare_engines.shake import bands, case_dt, class_counts, classify, pairwise, step_agreement
 from dem.studies.sweep import load_study
 
 SHORT = {"pybullet": "PB", "mujoco": "MJ", "lmgc90": "LM"}
@@ -31,7 +31,8 @@ def _cell(res: dict) -> str:
 
 
 def tables(records) -> str:
-    ok = [r for r in records if r.ok]
+    # a study file may hold cases of another step definition (another dt for the same factor): left out
+    ok = [r for r in records if r.ok and math.isclose(r.params["dt"], case_dt(r.params["engine"], r.params["step"]))]
     cols = sorted({(r.params["engine"], r.params["step"]) for r in ok},
                   key=lambda c: (list(SHORT).index(c[0]) if c[0] in SHORT else 9, -c[1]))
     out = []
@@ -65,6 +66,13 @@ def tables(records) -> str:
                 "| engines | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
         for pair, v in pw.items():
             out.append(f"| {pair} | " + " | ".join(f"{a} / {n}" for a, n in v.values()) + " |")
+    sa = step_agreement(ok)
+    if sa:
+        names = list(next(iter(sa.values())))
+        out += ["", "**Each engine at its two steps** (groups where the readings of both steps agree / groups run at both):",
+                "", "| engine | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+        for e, v in sa.items():
+            out.append(f"| {e} | " + " | ".join(f"{a} / {n}" for a, n in v.values()) + " |")
     return "\n".join(out) + "\n"
 
 

@@ -16,7 +16,9 @@ from dem.experiments.compare_engines.shake import (
     case_rows,
     class_counts,
     classify,
+    pairwise,
     shake_case,
+    step_agreement,
     study_attrs,
     study_cases,
 )
@@ -73,12 +75,15 @@ def _run(args: argparse.Namespace) -> int:
         print(f"archdem: interrupted; finished cases are stored, continue with --resume {path}", file=sys.stderr)
         return 130
     rows, groups = case_rows(res.records), classify(res.records)
+    pairs = {f"{s:g}": pairwise(res.records, s) for s in steps}
+    steadiness = step_agreement(res.records)
     csv_path = write_csv(rows, Path(path).with_suffix(".csv"))
     failed = [f"{r.params['id']} {r.params['engine']} {r.params['freq']:g} Hz: {r.error.strip().splitlines()[-1]}"
               for r in res.failed]
     if args.json:
         print_json({"study": str(path), "csv": str(csv_path), "cases": rows, "features": groups,
-                    "counts": class_counts(groups), "failed": failed})
+                    "counts": class_counts(groups), "pairwise": pairs, "step_agreement": steadiness,
+                    "failed": failed})
         return 0
     print(f"{len(rows)} of {len(res)} cases -> {path} (table: {csv_path})")
     for r in rows:
@@ -88,6 +93,11 @@ def _run(args: argparse.Namespace) -> int:
     for name, counts in class_counts(groups).items():
         print(f"{name}: " + "; ".join(f"{f} " + ", ".join(f"{c} {k}" for k, c in sorted(v.items()))
                                      for f, v in counts.items()))
+    for s, pw in pairs.items():
+        for pair, v in pw.items():
+            print(f"x{s} {pair} agree: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items()))
+    for e, v in steadiness.items():
+        print(f"{e} at its steps agrees: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items()))
     for f in failed:
         print(f"failed: {f}")
     return 0 if not failed else 1

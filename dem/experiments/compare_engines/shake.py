@@ -132,6 +132,14 @@ def feature_values(res: dict) -> dict:
     return {"first": res["amplitude_g"], "low_bands": low, "survival_above": surv, "upper_edge": upper}
 
 
+#: How each feature is read from :func:`feature_values` (a band by the lower end of its first instance,
+#: nan when there is none).
+FEATURES = {"first threshold": lambda f: f["first"],
+            "low collapse band": lambda f: f["low_bands"][0][0] if f["low_bands"] else math.nan,
+            "survival band above": lambda f: f["survival_above"][0][0] if f["survival_above"] else math.nan,
+            "upper edge": lambda f: f["upper_edge"]}
+
+
 def _agree(values: list[float]) -> bool:
     v = [x for x in values if math.isfinite(x)]
     if len(v) != len(values):
@@ -150,10 +158,7 @@ def features(results: dict) -> dict:
     by presence and by the lower end of the first such band."""
     fv = {k: feature_values(r) for k, r in results.items()}
     out = {}
-    for name, get in (("first threshold", lambda f: f["first"]),
-                      ("low collapse band", lambda f: f["low_bands"][0][0] if f["low_bands"] else math.nan),
-                      ("survival band above", lambda f: f["survival_above"][0][0] if f["survival_above"] else math.nan),
-                      ("upper edge", lambda f: f["upper_edge"])):
+    for name, get in FEATURES.items():
         vals = {f"{e}@{s:g}": get(f) for (e, s), f in fv.items()}
         finest = {}
         for (e, s), f in fv.items():
@@ -224,9 +229,7 @@ def pairwise(records, step: float = 1.0) -> dict:
     for r in records:
         if r.ok and r.params["step"] == step:
             groups.setdefault(_group_key(r.params), {})[r.params["engine"]] = feature_values(r.results)
-    getters = {"first threshold": lambda f: f["first"],
-               "low collapse band": lambda f: f["low_bands"][0][0] if f["low_bands"] else math.nan,
-               "upper edge": lambda f: f["upper_edge"]}
+    getters = {k: FEATURES[k] for k in ("first threshold", "low collapse band", "upper edge")}
     engines = sorted({e for g in groups.values() for e in g})
     out: dict = {}
     for i, a in enumerate(engines):
@@ -234,4 +237,22 @@ def pairwise(records, step: float = 1.0) -> dict:
             both = [g for g in groups.values() if a in g and b in g]
             out[f"{a}/{b}"] = {name: [sum(_agree([get(g[a]), get(g[b])]) for g in both), len(both)]
                                for name, get in getters.items()}
+    return out
+
+
+def step_agreement(records) -> dict:
+    """How often each engine's features hold when its integration step is changed: ``{engine:
+    {feature: [groups where every step of the engine agrees, groups it ran at two steps or more]}}``."""
+    runs: dict[tuple, dict] = {}
+    for r in records:
+        if r.ok:
+            runs.setdefault((r.params["engine"], *_group_key(r.params)), {})[r.params["step"]] = feature_values(r.results)
+    out: dict = {}
+    for (engine, *_), by_step in runs.items():
+        if len(by_step) < 2:
+            continue
+        e = out.setdefault(engine, {k: [0, 0] for k in ("first threshold", "low collapse band", "upper edge")})
+        for name in e:
+            e[name][0] += _agree([FEATURES[name](f) for f in by_step.values()])
+            e[name][1] += 1
     return out

@@ -179,6 +179,7 @@ def test_animate_frames_default_is_the_clis():
 def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     # `archdem domain --engine dem`: the analytic --amax default means the DEM's own a_max_ratio,
     # the frequencies default to the campaign's shake frequencies
+    from dem.core.settings import DYNAMICS_ENGINE
     import dem.experiments.shake.domain_cmd as dd
     from dem.cli import main
     from dem.experiments.shake.domain import dem_failure_domain
@@ -199,6 +200,9 @@ def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     assert seen["a_max_ratio"] == default_of(dem_failure_domain, "a_max_ratio")
     assert seen["config"] == default_of(dem_failure_domain, "config")
     assert seen["mu_joint"] is None and seen["mu_base"] is None  # the library's reference friction
+    assert seen["engine"] == DYNAMICS_ENGINE and seen["dt"] is None  # 'dem': the shakes' engine at its step
+    assert main(["domain", "Sh02-Sd020", "--engine", "pybullet", "--dt", "2.5e-4"]) == 0
+    assert (seen["engine"], seen["dt"]) == ("pybullet", 2.5e-4)
     assert main(["domain", "Sh02-Sd015", "--engine", "dem", "--amax", "3", "--freq", "2,5"]) == 0
     assert seen["a_max_ratio"] == 3.0 and seen["freqs"] == [2.0, 5.0]
     capsys.readouterr()

@@ -101,6 +101,7 @@ def test_cli_one_case_each_engine_and_resume(tmp_path, capsys):
     assert all(lam < a < 0.45 for a in firsts.values())
     (group,) = res["features"]
     assert group["features"]["first threshold"]["class"] == "common"
+    assert res["pairwise"]["1"]["mujoco/pybullet"]["first threshold"] == [1, 1] and res["step_agreement"] == {}
     assert (tmp_path / "s.csv").read_text().count("\n") == 3
     # the study is never overwritten; a resume runs nothing new and reads the same
     assert main(argv) == 2
@@ -119,3 +120,24 @@ def test_cli_bad_input_exits_2(argv, capsys, tmp_path):
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and err
     assert not list(tmp_path.iterdir())
+
+
+def test_pairwise_and_step_agreement():
+    from dem.experiments.compare_engines.shake import pairwise, step_agreement
+    from dem.studies.sweep import CaseRecord
+
+    far = _res(1.4, [(1.3, False, "-"), (1.4, True, "rocking"), (1.7, True, "rocking")])
+
+    def rec(engine, step, freq, res):
+        p = {"id": "S", "friction": "none", "freq": freq, "engine": engine, "step": step}
+        return CaseRecord(f"{engine}{step}{freq}", p, "ok", res)
+
+    records = [rec("a", 1.0, 2.0, BANDED), rec("b", 1.0, 2.0, BANDED), rec("c", 1.0, 2.0, far),
+               rec("a", 1.0, 4.0, BANDED), rec("b", 1.0, 4.0, far),
+               rec("a", 0.5, 2.0, BANDED), rec("c", 0.5, 2.0, BANDED), rec("b", 0.5, 4.0, far)]
+    pw = pairwise(records)
+    assert pw["a/b"]["first threshold"] == [1, 2] and pw["a/c"]["first threshold"] == [0, 1]
+    assert pw["a/b"]["upper edge"] == [2, 2]  # 1.25 and 1.4 g: one scan step apart
+    sa = step_agreement(records)
+    assert sa["a"]["first threshold"] == [1, 1] and sa["c"]["first threshold"] == [0, 1] and sa["b"]["upper edge"] == [1, 1]
+    assert pairwise(records, 0.5)["a/c"]["low collapse band"] == [1, 1]
