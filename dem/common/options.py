@@ -88,11 +88,12 @@ def geometry_from_args(args: argparse.Namespace):
     given = [f"--{k.replace('_', '-')}" for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs") + PIER_OPTIONS
              if getattr(args, k, None) is not None]
     if getattr(args, "id", None) is not None or given:
-        raise ArchdemInputError(f"--geometry gives the whole structure: drop {'the specimen id' if args.id else given[0]}")
+        drop = "the specimen id" if getattr(args, "id", None) is not None else given[0]
+        raise ArchdemInputError(f"--geometry gives the whole structure: drop {drop}")
     if args.depth is not None and not (math.isfinite(args.depth) and MIN_LENGTH_M <= args.depth <= MAX_LENGTH_M):
         raise ArchdemInputError(f"--depth must be a length between {MIN_LENGTH_M:g} and {MAX_LENGTH_M:g} m, got {args.depth:g}")
     units = args.units if args.units in UNITS else None  # otherwise a record's units (shake)
-    density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
+    density = check_density(args.density) if getattr(args, "density", None) is not None else DEFAULT_DENSITY
     return Path(args.geometry).stem, read_assembly(args.geometry, units=units, depth=args.depth, density=density)
 
 

@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 from pathlib import Path
 
 import matplotlib
@@ -91,7 +92,9 @@ def plot_lambda_mu(smap, ax=None):
     ax.set_xlabel("joint friction mu")
     ax.set_ylabel("collapse multiplier lambda")
     ax.set_ylim(0, 1.25 * max(a.lam_no_sliding, np.nanmax([p.lam for p in smap.points] + [0.1])))
-    ax.set_title(f"{smap.id} (Sh = {smap.arch.Sh:.2f}, Sd = {smap.arch.Sd:.2f}, {smap.config})")
+    shape = smap.shape()
+    ax.set_title(f"{smap.id} (drawing)" if smap.drawn else
+                 f"{smap.id} (Sh = {shape['Sh']:.2f}, Sd = {shape['Sd']:.2f}, {smap.config})")
     ax.legend(fontsize=7, loc="lower right")
     ax.grid(alpha=0.3)
     return ax
@@ -127,13 +130,17 @@ def plot_mode_grid(result, mu_ref: float | None = None, ax=None):
 
 
 def save_map_figures(result, out_dir: str | os.PathLike) -> list[Path]:
-    """Write the threshold map, the mode grid and one lambda(mu) figure per specimen (PNG)."""
+    """Write the threshold map and the mode grid of the arches (over Sh and Sd: not of drawings) and one
+    lambda(mu) figure per specimen (PNG)."""
     d = writable_dir(out_dir)
     paths = []
+    arches = replace(result, specimens=[s for s in result.specimens if not s.drawn])
     for name, fn in (("threshold_map", plot_threshold_map), ("mode_grid", plot_mode_grid)):
+        if not arches.specimens:
+            break
         fig = Figure(figsize=(7, 5))
         ax = fig.subplots()
-        fn(result, ax=ax)
+        fn(arches, ax=ax)
         fig.tight_layout()
         p = d / f"{name}.png"
         fig.savefig(p, dpi=120)

@@ -9,11 +9,14 @@ from dem.common.joints import contact_fraction
 from dem.common.options import (
     add_contact_law_arguments,
     add_engine_argument,
+    add_geometry_arguments,
     add_pier_arguments,
     can_make_dir,
     contact_law_settings,
     contact_option,
     default_of,
+    geometry_from_args,
+    option_used,
     piers_from_args,
     print_json,
     study_definition,
@@ -23,11 +26,16 @@ from dem.common.options import (
 from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
 from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
 from dem.experiments.tilt.case import MAP_TILT_TOL
-from specimens.catalogue import FULL_SCALE_SPANS, full_scale_set, select_specimens
+from specimens.catalogue import FULL_SCALE_SPANS, Specimen, full_scale_set, select_specimens
 from specimens.errors import ArchdemInputError
 
 
 def _specimens(args: argparse.Namespace) -> list:
+    if args.geometry is not None:
+        for dest in ("specimens", "full_scale"):
+            option_used(args, dest, False, "--geometry gives the one structure of the map")
+        label, asm = geometry_from_args(args)
+        return [Specimen(label, asm)]
     if not args.full_scale:
         return select_specimens(args.specimens)
     pool = {s.id: s for s in full_scale_set()}
@@ -96,7 +104,8 @@ def _run(args: argparse.Namespace) -> int:
     for s in res.specimens:
         th = s.threshold
         br = f"[{f(th.lo)},{f(th.hi)}]"
-        print(f"{s.id:<22} {s.arch.Sh:5.2f} {s.arch.Sd:5.2f}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
+        sh, sd = ("    -", "    -") if s.drawn else (f"{s.arch.Sh:5.2f}", f"{s.arch.Sd:5.2f}")
+        print(f"{s.id:<22} {sh} {sd}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
               f"{f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  {th.status}"
               f"{'' if th.monotonic else ' (non-monotonic)'}")
     return 0
@@ -130,5 +139,6 @@ def register(sub) -> None:
                         f"{default_of(catalogue_map, 'n_voussoirs')} voussoirs per side)")
     p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
     add_pier_arguments(p)
+    add_geometry_arguments(p)
     p.add_argument("--json", action="store_true", help="print JSON per specimen")
     p.set_defaults(func=_run)

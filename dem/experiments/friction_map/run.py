@@ -64,6 +64,7 @@ from dem.experiments.tilt.case import (
 from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import REFERENCE_MU_BASE
+from specimens.drawn import DrawnAssembly
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.io import parse_grid
@@ -199,24 +200,29 @@ def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) ->
     return search(full, 0.0, mu_max, LP_MU_TOL, rule="width", lo_run=False, hi_run=True).hi
 
 
-def analytic_curves(arch: PointedArch, config: str, mu_base: float, mus: Sequence[float],
+def analytic_curves(arch: PointedArch | DrawnAssembly, config: str, mu_base: float, mus: Sequence[float],
                     n_voussoirs: int = 8, contact: float = 1.0, piers=None) -> AnalyticCurves:
     """LP, two-bar and no-sliding references of ``arch`` on the friction values ``mus``; the LP,
     enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints).
     On ``piers`` the continuous one has hinges anywhere along ring and piers, and the two-bar ones
-    (a ring on a rigid base) are NaN."""
+    (a ring on a rigid base) are NaN. A drawing's blocks have the LP curves only (and the four-hinge
+    enumeration when they form one chain): the continuous ring and the two-bar need an arch."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.limit.limit_piers import continuous_on_piers
     from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
 
-    asm = discretise(arch, n_voussoirs=n_voussoirs, config=config, contact=contact, piers=piers)
+    drawn = isinstance(arch, DrawnAssembly)
+    asm = arch.with_contact(contact) if drawn else discretise(arch, n_voussoirs=n_voussoirs, config=config,
+                                                               contact=contact, piers=piers)
     mu = np.asarray(sorted(set(float(m) for m in mus)), dtype=float)
     lam_lp = np.array([solve_lp(asm, m, mu_base).lam for m in mu])
     lam_ns = float(solve_lp(asm, math.inf, mu_base).lam)
-    lam_k = float(enumerate_mechanisms(asm).lam)
-    if piers is not None:
+    lam_k = float(enumerate_mechanisms(asm).lam) if not drawn or asm.chain else math.nan
+    if drawn:
+        lam_c, lam_tb, lam_tb0, ms_tb, ms_tbc = math.nan, np.full(len(mu), math.nan), math.nan, None, None
+    elif piers is not None:
         lam_c = float(continuous_on_piers(arch, piers, density=asm.density, contact=contact).lam)
         lam_tb, lam_tb0, ms_tb, ms_tbc = np.full(len(mu), math.nan), math.nan, None, None
     else:
@@ -265,12 +271,23 @@ class SpecimenMap:
     def mu_star_dem(self) -> float | None:
         return self.threshold.mu_star
 
+    @property
+    def drawn(self) -> bool:
+        """The blocks of a drawing (no arch parameters), not a two-centred arch."""
+        return isinstance(self.arch, DrawnAssembly)
+
+    def shape(self) -> dict:
+        """``Sh``, ``Sd`` and ``span`` [m] of the arch (None for a drawing)."""
+        if self.drawn:
+            return {"Sh": None, "Sd": None, "span": None}
+        return {"Sh": self.arch.Sh, "Sd": self.arch.Sd, "span": self.arch.span}
+
     def to_json(self) -> dict:
         """Per-specimen JSON of ``archdem map --json``."""
         a = self.analytic
         th = self.threshold
         return {
-            "id": self.id, "Sh": self.arch.Sh, "Sd": self.arch.Sd, "span": self.arch.span, "config": self.config,
+            "id": self.id, **self.shape(), "config": self.config,
             "mu_base": self.mu_base,
             "mu_star_dem": self.mu_star_dem, "mu_star_dem_bracket": [th.lo, th.hi], "mu_star_dem_status": th.status,
             "mu_star_dem_monotonic": th.monotonic,
@@ -308,8 +325,9 @@ class MapResult:
             rows = []
             for s in self.specimens:
                 a, th = s.analytic, s.threshold
+                shape = {k: None if v is None else round(v, 6) for k, v in s.shape().items()}
                 rows.append({
-                    "id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6), "span_m": round(s.arch.span, 6),
+                    "id": s.id, "Sh": shape["Sh"], "Sd": shape["Sd"], "span_m": shape["span"],
                     "config": s.config, "mu_base": s.mu_base,
                     "mu_star_dem": s.mu_star_dem, "mu_star_dem_lo": th.lo, "mu_star_dem_hi": th.hi,
                     "dem_status": th.status, "dem_monotonic": th.monotonic,
@@ -389,6 +407,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         raise ArchdemInputError("give the effective contact of every specimen of the map")
     if piers is not None:
         for s in specs:
+            if isinstance(s.arch, DrawnAssembly):
+                raise ArchdemInputError(f"{s.id}: a drawing holds its piers as blocks: draw them instead of --pier-*")
             piers.check(s.arch)
     protocol = dict(protocol if protocol is not None else MAP_PROTOCOL)
     scaled_protocol(protocol, 1.0)  # validate in the main process

@@ -20,6 +20,7 @@ from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, TiltResult, hold_level, tilt
 from specimens.blocks import check_contact, discretise
+from specimens.drawn import DrawnAssembly, from_dict
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
@@ -59,7 +60,7 @@ def _jsonable(v):
     return list(v) if isinstance(v, tuple) else v
 
 
-def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_base: float,
+def make_case(label: str, arch: PointedArch | DrawnAssembly, config: str, mu_joint: float, mu_base: float,
               protocol: dict | None = None, settings: dict | None = None, n_voussoirs: int = 8,
               time_scale: float | str = "auto", contact: float = 1.0, piers=None) -> dict:
     """One tilt case (a JSON-serialisable dict; its key identifies it in the study file).
@@ -68,7 +69,9 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
     :class:`dem.core.settings.Settings` fields at the catalogue scale; the time scale is applied
     by the case function. ``contact``: the effective contact of the joints (written only when
     below 1, so full-contact cases keep their keys); ``piers``: the arch stands on these
-    :class:`~specimens.piers.Piers` (written only when given).
+    :class:`~specimens.piers.Piers` (written only when given). ``arch`` may be a drawing's blocks
+    (:class:`~specimens.drawn.DrawnAssembly`): the case then holds them whole (``drawn``), runs the
+    protocol at its own scale and has no configuration, voussoirs or piers of its own.
     """
     if config not in ("glued", "free"):
         raise ArchdemInputError(f"configuration must be 'glued' or 'free', got {config!r}")
@@ -76,15 +79,19 @@ def make_case(label: str, arch: PointedArch, config: str, mu_joint: float, mu_ba
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ArchdemInputError(f"{nm} must be a finite number > 0, got {v!r}")
     default = TiltProtocol()
+    drawn = isinstance(arch, DrawnAssembly)
+    if drawn and piers is not None:
+        raise ArchdemInputError("a drawing holds its piers as blocks: draw them instead of --pier-*")
     return {
-        "label": label, "arch": arch_params(arch), "config": config, "n_voussoirs": int(n_voussoirs),
+        "label": label, **({"drawn": arch.to_dict()} if drawn else {"arch": arch_params(arch)}), "config": config,
+        "n_voussoirs": int(n_voussoirs),
         "mu_joint": round(float(mu_joint), 9), "mu_base": float(mu_base),
         # CASE_PROTOCOL_FIELDS are written out so that a study made with other defaults is not
         # resumed into (its cases get other keys and are recomputed beside the old ones)
         "protocol": {**{k: _jsonable(getattr(default, k)) for k in CASE_PROTOCOL_FIELDS},
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
-        "time_scale": time_scale_of(arch, time_scale),
+        "time_scale": 1.0 if drawn else time_scale_of(arch, time_scale),
         **({} if check_contact(contact) == 1.0 else {"contact": float(contact)}),
         **({} if piers is None else {"piers": piers.describe()}),
     }
@@ -109,10 +116,13 @@ def scaled_settings(case: dict):
 
 def _case_setup(case: dict):
     """Assembly, model, settings and protocol of a DEM tilt case."""
-    asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)), config=case["config"],
-                     contact=float(case.get("contact", 1.0)),
-                     bands={k: tuple(v) for k, v in case["bands"].items()} if case.get("bands") else None,
-                     piers=Piers(**case["piers"]) if case.get("piers") else None)
+    if "drawn" in case:
+        asm = from_dict(case["drawn"]).with_contact(float(case.get("contact", 1.0)))
+    else:
+        asm = discretise(arch_from_params(case["arch"]), n_voussoirs=int(case.get("n_voussoirs", 8)),
+                         config=case["config"], contact=float(case.get("contact", 1.0)),
+                         bands={k: tuple(v) for k, v in case["bands"].items()} if case.get("bands") else None,
+                         piers=Piers(**case["piers"]) if case.get("piers") else None)
     settings = scaled_settings(case)
     proto = scaled_protocol(case["protocol"], float(case.get("time_scale", 1.0)))
     return asm, from_assembly(asm, name=case["label"]), settings, proto

@@ -88,3 +88,29 @@ def test_a_fragility_case_carries_the_drawing_whole():
     perturbed = _model(drawing_structure(asm), {**pert, "edge_loss_sd": 0.25e-3}, 1, 0)
     assert perturbed.source["contact"] == 1.0 and any(j.band != (0.0, 1.0) for j in perturbed.assembly.joints)
     assert perturbed.source["bands"]  # the engines read relieved joints from it
+
+
+@pytest.mark.slow
+def test_the_friction_map_of_a_drawing(tmp_path, capsys):
+    """`archdem map --geometry`: the survey-like drawing's tilts carry its blocks whole; the DEM slides at a low
+    friction and rocks at a high one, where its lambda meets the no-sliding LP of the same blocks within the
+    map's 2 % tilt tolerance and 3 % (docs/validation.md#1-how-to-reproduce); the arch-only columns are empty."""
+    import json
+
+    from dem.cli import main
+
+    assert main(["map", "--geometry", str(EXAMPLE_DRAWING), "--mu", "0.3,1.0", "--refine", "0",
+                 "--out", str(tmp_path / "m.h5"), "--plot", str(tmp_path / "fig"), "--json"]) == 0
+    (m,) = json.loads(capsys.readouterr().out)
+    assert (m["Sh"], m["Sd"], m["span"], m["mu_star_two_bar"]) == (None, None, None, None)
+    lo, hi = (p for p in sorted(m["points"], key=lambda p: p["mu"]))
+    assert lo["mode"] in ("sliding", "mixed") and hi["mode"] == "rocking"
+    asm = read_assembly(EXAMPLE_DRAWING)
+    assert hi["lambda"] == pytest.approx(solve_lp(asm, math.inf, 1.0).lam, rel=0.03)
+    assert m["mu_star_dem_bracket"] == [0.3, 1.0] and 0.3 < m["mu_star_lp"] < 1.0
+    assert [p.name for p in (tmp_path / "fig").iterdir()] == [f"lambda_mu_{EXAMPLE_DRAWING.stem}.png"]
+    # the drawing beside the catalogue's options: one line each, nothing run
+    for extra in (["--specimens", "Sh06-Sd015"], ["--full-scale"], ["--pier-height", "0.1"]):
+        assert main(["map", "--geometry", str(EXAMPLE_DRAWING), *extra, "--out", str(tmp_path / "x.h5")]) == 2
+        assert len(capsys.readouterr().err.strip().splitlines()) == 1
+    assert not (tmp_path / "x.h5").exists()
