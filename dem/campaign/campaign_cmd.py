@@ -38,7 +38,7 @@ def _campaign(args: argparse.Namespace) -> int:
         unknown = [s for s in steps if s not in all_steps()]
         if unknown:
             raise ArchdemInputError(f"unknown campaign step(s) {', '.join(unknown)}; steps: {', '.join(all_steps())}")
-    for name in ("piers", "fragility"):
+    for name in ("piers", "fragility", "drawing"):
         if getattr(args, name):
             # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
             from dem.campaign.runner import default_steps
@@ -127,11 +127,13 @@ def register(sub) -> None:
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
     p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
     p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT: run every sweep there")
-    p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers and fragility only when named "
-                                                 "or with --piers / --fragility)")
+    p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers, fragility and drawing only "
+                                                 "when named or with --piers / --fragility / --drawing)")
     p.add_argument("--fragility", action="store_true",
                    help="add the fragility study: ensembles under sine pulses (one specimen at 2 Hz when quick)")
     p.add_argument("--piers", action="store_true",
                    help="add the piers study: one arch on piers of growing height, limit analysis and DEM tilt")
+    p.add_argument("--drawing", action="store_true",
+                   help="add the drawing step: the shipped drawing of an arch on piers, read and run end to end")
     p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")
     p.set_defaults(func=_campaign)

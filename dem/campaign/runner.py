@@ -25,6 +25,7 @@ from dem.experiments.modes.step_modes import step_modes
 from dem.experiments.record.step_record import step_record
 from dem.experiments.shake.step_shake import step_shake
 from dem.experiments.tilt.step_lab import step_lab
+from dem.experiments.assessment.step_drawing import step_drawing
 from dem.experiments.tilt.step_piers import step_piers
 from dem.experiments.tilt.step_tilt import step_tilt
 from specimens.errors import ArchdemInputError
@@ -46,9 +47,10 @@ STEPS: dict[str, tuple[StepFunc, str]] = {
     "piers": (step_piers, "one arch on piers of growing height: limit analysis and DEM tilt"),
     "assess": (step_assess, "code-based assessment of the Noh Gumbad vaults, with and without FRP strips"),
     "fragility": (step_fragility, "fragility curves from ensembles of perturbed realisations under sine pulses"),
+    "drawing": (step_drawing, "the shipped drawing of an arch on piers: limit analysis, DEM tilt, code checks"),
 }
-#: Steps run only when asked for (``--steps``, ``archdem campaign --piers`` or ``--fragility``).
-OPTIONAL_STEPS = ("piers", "fragility")
+#: Steps run only when asked for (``--steps``, ``archdem campaign --piers``, ``--fragility`` or ``--drawing``).
+OPTIONAL_STEPS = ("piers", "fragility", "drawing")
 
 
 def all_steps() -> dict[str, tuple[StepFunc, str]]:

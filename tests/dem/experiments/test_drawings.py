@@ -114,3 +114,22 @@ def test_the_friction_map_of_a_drawing(tmp_path, capsys):
         assert main(["map", "--geometry", str(EXAMPLE_DRAWING), *extra, "--out", str(tmp_path / "x.h5")]) == 2
         assert len(capsys.readouterr().err.strip().splitlines()) == 1
     assert not (tmp_path / "x.h5").exists()
+
+
+@pytest.mark.slow
+def test_the_campaigns_drawing_step(tmp_path):
+    """`archdem campaign --drawing`: the shipped drawing read and run end to end; its no-sliding tilt within
+    3 % of the LP with the LP's hinges, and the three kinematic checks of the SLV."""
+    import csv
+
+    from dem.cli import main
+
+    assert main(["campaign", "--quick", "--drawing", "--steps", "drawing", "--out", str(tmp_path)]) == 0
+    with open(tmp_path / "drawing" / "drawing.csv", newline="") as fh:
+        ns, ref = list(csv.DictReader(fh))
+    assert abs(float(ns["err_dem_vs_lp_pct"])) < 3 and ns["hinges_dem"].split() == [
+        h.split(":")[0] for h in ns["hinges_lp"].split()]
+    with open(tmp_path / "drawing" / "drawing-assessment.csv", newline="") as fh:
+        checks = list(csv.DictReader(fh))
+    assert [c["kind"] for c in checks] == ["activation", "linear", "non-linear"]
+    assert (tmp_path / "drawing" / "drawing.png").is_file() and (tmp_path / "report.html").is_file()
