@@ -9,7 +9,7 @@ import time
 from dem.common.campaign import CampaignContext
 from dem.core.engines import get_engine
 from dem.core.model import from_assembly
-from dem.core.settings import Settings
+from dem.core.settings import DYNAMICS_ENGINE, Settings
 from dem.experiments.friction_map.run import parse_mu_grid
 from dem.experiments.friction_map.step_map import map_plan
 from dem.experiments.record.step_record import record_plan
@@ -33,7 +33,10 @@ UNIT_CORE_S = {
     ("record", True): 83.4,  # one scaled-record threshold, 3 s window
     ("record", False): 209.8,  # ... 7 s window, tol 1 %
 }
-ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.7, "lmgc90": 10.0}  # lmgc90: a 6 Hz threshold, 1098 s against 112 s (docs/engines.md#11-lmgc90)
+# Cost of a threshold search per engine at the protocol's 0.5 ms step, over PyBullet's: the sums of the
+# engines' shake study on one machine (docs/validation.md#19-three-engine-shake-study)
+ENGINE_COST = {"pybullet": 1.0, "mujoco": 0.78, "lmgc90": 11.6}
+DYNAMICS_DT_COST = 2.05  # DYNAMICS_ENGINE's searches at DYNAMICS_DT over its own at 0.5 ms (the same study)
 # Wall seconds per simulated second that machine_speed reads on the machine of UNIT_CORE_S; the estimate
 # scales the unit costs by this machine's reading over these (docs/timings.md#3-the-campaigns-time-estimate)
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25, "lmgc90": 2.85}  # lmgc90: 1.5 x PyBullet's, paired at rest
@@ -83,7 +86,8 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     for name in (s for s in steps if s in units):
         n, what = units[name]
         engine = ctx.dynamics_engine if name in DYNAMIC_STEPS else ctx.engine
+        step = DYNAMICS_DT_COST if name in DYNAMIC_STEPS and engine == DYNAMICS_ENGINE else 1.0
         # units (or, for thresholds, the simulations inside one unit) run in parallel on the cores
-        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * scale
+        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * step * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
     return out

@@ -22,7 +22,7 @@ from dem.common.options import (
     print_json,
     workers_option,
 )
-from dem.core.settings import Settings
+from dem.core.settings import dynamics_settings
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.io import writable_file
@@ -247,7 +247,7 @@ def _run(args: argparse.Namespace) -> int:
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
     a = assess_with_records(arch, args.records or (), site, FC=args.FC, q=args.q, limit_state=args.limit_state,
-                            height=height, period_range=_period_range(args), settings=Settings(engine=args.engine),
+                            height=height, period_range=_period_range(args), settings=dynamics_settings(engine=args.engine),
                             workers=args.workers, strips=strips, tie=tie, sld_site=sld,
                             **discretisation_kwargs(args, arch))
     mech, res = a.mechanism, a.assessment

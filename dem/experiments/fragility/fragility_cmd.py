@@ -27,7 +27,7 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.model import from_assembly, single_block
-from dem.core.settings import Settings
+from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings, dynamics_settings
 from dem.experiments.fragility.run import (
     DEFAULT_EDGE_LOSS_SD,
     DEFAULT_FRICTION_COV,
@@ -78,7 +78,7 @@ def _settings(args: argparse.Namespace) -> dict:
         s["dt"] = args.dt
     if args.solver_iterations is not None:
         s["solver_iterations"] = args.solver_iterations
-    Settings(**s)  # checks them
+    s["dt"] = dynamics_settings(**s).dt  # checks them; the step written into the study
     return s
 
 
@@ -229,7 +229,8 @@ def register(sub) -> None:
                    help=f"coefficient of variation of the friction coefficients (default {DEFAULT_FRICTION_COV:g})")
     add_friction_arguments(p, "nominal ")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the plane")
-    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
+    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
+                        f"{default_of(Settings, 'dt'):g} on the other engines)")
     p.add_argument("--solver-iterations", type=int, default=None,
                    help=f"solver iterations per step (default {default_of(Settings, 'solver_iterations')})")
     add_engine_argument(p, dynamics=True)

@@ -26,7 +26,7 @@ import numpy as np
 from analytic.motions.inputs import SampledMotion, SinePulse
 from analytic.motions.records import baseline_correct, read_record
 from dem.core.model import from_assembly, single_block
-from dem.core.settings import Settings, dynamics_settings
+from dem.core.settings import dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, shake
 from dem.experiments.tilt.case import arch_from_params, arch_params
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise

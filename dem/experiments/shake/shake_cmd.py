@@ -23,7 +23,7 @@ from dem.common.options import (
     writable_dir,
 )
 from dem.core.model import from_assembly
-from dem.core.settings import Settings
+from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings, dynamics_settings
 from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_SIMULATED_S, ShakeProtocol, shake
 from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
@@ -49,7 +49,7 @@ def model_and_settings(args: argparse.Namespace):
     if args.dt is not None:
         _positive("--dt", args.dt)
         kw["dt"] = args.dt
-    return label, arch, asm, from_assembly(asm, name=label), Settings(**kw)
+    return label, arch, asm, from_assembly(asm, name=label), dynamics_settings(**kw)
 
 
 #: Bounds of a sine pulse on the command line: beyond them a run answers nothing physical.
@@ -114,7 +114,8 @@ def add_shake_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
     add_friction_arguments(p)
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {default_of(Settings, 'dt'):g})")
+    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
+                        f"{default_of(Settings, 'dt'):g} on the other engines)")
     add_engine_argument(p, dynamics=True)
     add_contact_law_arguments(p)
     p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),

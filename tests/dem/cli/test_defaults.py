@@ -130,7 +130,7 @@ def test_no_default_without_a_library_source(cmd):
 
 def test_help_texts_show_the_library_values():
     from analytic.rocking.domain import failure_domain
-    from dem.core.settings import Settings
+    from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings
     from dem.experiments.compare_engines.run import FRICTIONS
     from dem.experiments.shake.animation import animate
     from dem.experiments.shake.domain import dem_failure_domain
@@ -152,7 +152,8 @@ def test_help_texts_show_the_library_values():
     for cmd in ("tilt", "shake", "threshold"):
         assert f"(default {s.mu_joint:g})" in _help(cmd, "mu_joint")
         assert f"(default {s.mu_base:g})" in _help(cmd, "mu_base")
-        assert f"(default {s.dt:g})" in _help(cmd, "dt")
+        assert (f"(default {s.dt:g})" if cmd == "tilt" else
+                f"(default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, {s.dt:g} on the other engines)") in _help(cmd, "dt")
     for cmd in ("shake", "threshold"):
         assert f"(default {ShakeProtocol().tail:g})" in _help(cmd, "tail")
     for cmd in ("analytic", "domain"):  # None: the library's reference friction

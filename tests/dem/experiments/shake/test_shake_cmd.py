@@ -90,7 +90,7 @@ def test_shake_record(tmp_path, capsys, monkeypatch):
                "--out", str(tmp_path)])
     assert rc == 0
     cap = capsys.readouterr()
-    assert "archdem: simulating up to 0.5 s of motion and tail (1000 steps of 0.0005 s)" in cap.err
+    assert "archdem: simulating up to 0.5 s of motion and tail (4000 steps of 0.000125 s)" in cap.err
     d = json.loads(cap.out)
     assert d["pga_g"] == pytest.approx(0.2) and d["duration"] == pytest.approx(0.5)
     assert d["input"]["kind"] == "record"
