@@ -69,8 +69,8 @@ def tables(records) -> str:
     sa = step_agreement(ok)
     if sa:
         names = list(next(iter(sa.values())))
-        out += ["", "**Each engine at its two steps** (groups where the readings of both steps agree / groups run at both):",
-                "", "| engine | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+        out += ["", "**Each engine at its two steps** (groups where the readings of both steps agree / groups run at "
+                "both):", "", "| engine | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
         for e, v in sa.items():
             out.append(f"| {e} | " + " | ".join(f"{a} / {n}" for a, n in v.values()) + " |")
     return "\n".join(out) + "\n"

@@ -68,7 +68,8 @@ def _campaign(args: argparse.Namespace) -> int:
         est = estimate(ctx, steps_run, speed=speed)
         total = sum(e["wall_s"] for e in est.values())
         parts = "; ".join(f"{k}: {e['units']} {e['what']}" for k, e in est.items())
-        print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine} (shakes {ctx.dynamics_engine}): {parts}; estimated "
+        print(f"{'quick' if ctx.quick else 'full'} campaign, {ctx.engine} (shakes {ctx.dynamics_engine}): {parts}; "
+              "estimated "
               f"{_duration(total)} of simulation at this machine's {speed:.2f} s per simulated second "
               f"(the unit costs are for a machine reading {REFERENCE_SPEED[ctx.engine]:.2f}; steps already finished "
               f"in {out} are kept)", flush=True)
@@ -120,7 +121,8 @@ def register(sub) -> None:
                    help="effective contact of every joint in every step, in (0, 1], or 'calibrated' (archdem calibrate; "
                         f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
     add_engine_argument(p)
-    p.add_argument("--dynamics-engine", choices=tuple(available_engines()), default=default_of(CampaignContext, "dynamics_engine"),
+    p.add_argument("--dynamics-engine", choices=tuple(available_engines()),
+                   default=default_of(CampaignContext, "dynamics_engine"),
                    help="engine of the shake, record and fragility steps (default "
                         f"{default_of(CampaignContext, 'dynamics_engine')}; --engine runs the others)")
     add_contact_law_arguments(p)

@@ -85,7 +85,8 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
     out = ctx.out
     manifest_path = out / "campaign.json"
     manifest = json.loads(manifest_path.read_text()) if manifest_path.exists() else {}
-    params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine, "dynamics_engine": ctx.dynamics_engine, "quick": ctx.quick,
+    params = {"specimens": [s.id for s in ctx.specimens], "config": ctx.config, "engine": ctx.engine,
+              "dynamics_engine": ctx.dynamics_engine, "quick": ctx.quick,
               **({} if ctx.contact == 1.0 else {"contact": ctx.contact}), **({"joints": ctx.joints} if ctx.joints else {})}
     if manifest and manifest.get("parameters") != params:
         raise ArchdemInputError(

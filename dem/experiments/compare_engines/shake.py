@@ -32,7 +32,8 @@ from specimens.catalogue import CATALOGUE, get_specimen
 from specimens.errors import ArchdemInputError
 
 STUDY_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # [Hz], the shake-table tests' range
-STUDY_SPECIMENS = tuple(s.id for s in CATALOGUE if round(s.arch.Sd, 3) in (0.15, 0.20))  # the specimens shaken in the laboratory
+#: The specimens the laboratory shook: Sd 0.15 and 0.20.
+STUDY_SPECIMENS = tuple(s.id for s in CATALOGUE if round(s.arch.Sd, 3) in (0.15, 0.20))
 STUDY_FRICTIONS = ("joints", "none")
 STUDY_STEPS = (1.0, 0.5)  # integration steps as multiples of the engine's default: the default and its half
 A_MAX_RATIO = 6.0  # top of the amplitude scan / (lambda g): the DEM domain's
