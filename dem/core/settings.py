@@ -26,7 +26,7 @@ MAX_DAMPING_XI = 2.0
 #: (docs/decisions/011-dynamics-engine.md).
 DYNAMICS_ENGINE = "mujoco"
 #: Protocol step [s] of a shake on DYNAMICS_ENGINE unless one is given: MuJoCo integrates with it
-#: (0.125 ms, half its own default), where its thresholds meet LMGC90's more often (decision 011).
+#: (0.125 ms, half its own default), where its shake answers are converged in the step (decision 011).
 DYNAMICS_DT = 1.25e-4
 
 
