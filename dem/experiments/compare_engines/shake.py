@@ -141,6 +141,10 @@ FEATURES = {"first threshold": lambda f: f["first"],
             "upper edge": lambda f: f["upper_edge"]}
 
 
+#: The features the two-by-two and step comparisons count (the survival band goes with the low band).
+COMPARED = ("first threshold", "low collapse band", "upper edge")
+
+
 def _agree(values: list[float]) -> bool:
     v = [x for x in values if math.isfinite(x)]
     if len(v) != len(values):
@@ -230,7 +234,7 @@ def pairwise(records, step: float = 1.0) -> dict:
     for r in records:
         if r.ok and r.params["step"] == step:
             groups.setdefault(_group_key(r.params), {})[r.params["engine"]] = feature_values(r.results)
-    getters = {k: FEATURES[k] for k in ("first threshold", "low collapse band", "upper edge")}
+    getters = {k: FEATURES[k] for k in COMPARED}
     engines = sorted({e for g in groups.values() for e in g})
     out: dict = {}
     for i, a in enumerate(engines):
@@ -252,7 +256,7 @@ def step_agreement(records) -> dict:
     for (engine, *_), by_step in runs.items():
         if len(by_step) < 2:
             continue
-        e = out.setdefault(engine, {k: [0, 0] for k in ("first threshold", "low collapse band", "upper edge")})
+        e = out.setdefault(engine, {k: [0, 0] for k in COMPARED})
         for name in e:
             e[name][0] += _agree([FEATURES[name](f) for f in by_step.values()])
             e[name][1] += 1
