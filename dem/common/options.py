@@ -7,6 +7,7 @@ import inspect
 import json
 import math
 import os
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -311,6 +312,14 @@ def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[s
 
 #: Options that say where and how a study runs, not what it computes: outside its stored definition.
 RUN_OPTIONS = frozenset({"out", "resume", "workers", "scheduler", "plot", "json", "func", "command", "given"})
+
+
+def study_stopped(path: str, exc: BaseException) -> int:
+    """Says in one line that the study in ``path`` stopped early and how to continue it; returns the
+    exit code (130 for Ctrl-C, 2 for a dead worker). Its finished cases are in the file either way."""
+    why = "interrupted" if isinstance(exc, KeyboardInterrupt) else f"study interrupted: {exc}"
+    print(f"archdem: {why}; finished cases are stored, continue with --resume {path}", file=sys.stderr)
+    return 130 if isinstance(exc, KeyboardInterrupt) else 2
 
 
 def given(args: argparse.Namespace) -> frozenset[str]:

@@ -6,10 +6,17 @@ from __future__ import annotations
 import argparse
 import csv
 import math
-import sys
 from pathlib import Path
 
-from dem.common.options import default_of, parse_grid, print_json, study_definition, study_path, workers_option
+from dem.common.options import (
+    default_of,
+    parse_grid,
+    print_json,
+    study_definition,
+    study_path,
+    study_stopped,
+    workers_option,
+)
 from dem.core.engines import available_engines, check_engine
 from dem.experiments.compare_engines.run import FRICTIONS
 from dem.experiments.compare_engines.shake import (
@@ -25,7 +32,6 @@ from dem.experiments.compare_engines.shake import (
 from specimens.catalogue import select_specimens
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path
-
 
 
 def _listed(values) -> str:
@@ -68,12 +74,8 @@ def _run(args: argparse.Namespace) -> int:
     path, resume = study_path(args, "runs/compare-shake", "compare-shake")
     try:
         res = run_study_cases(cases, path, args, resume)
-    except StudyInterrupted as exc:
-        print(f"archdem: study interrupted: {exc}; continue with --resume {path}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:
-        print(f"archdem: interrupted; finished cases are stored, continue with --resume {path}", file=sys.stderr)
-        return 130
+    except (StudyInterrupted, KeyboardInterrupt) as exc:
+        return study_stopped(path, exc)
     rows, groups = case_rows(res.records), classify(res.records)
     pairs = {f"{s:g}": pairwise(res.records, s) for s in steps}
     steadiness = step_agreement(res.records)

@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import sys
 
 from dem.common.options import (
     add_arch_arguments,
@@ -24,6 +23,7 @@ from dem.common.options import (
     require_standing,
     study_definition,
     study_path,
+    study_stopped,
     workers_option,
 )
 from dem.core.model import from_assembly, single_block
@@ -173,12 +173,8 @@ def _run(args: argparse.Namespace) -> int:
         res = fragility(label, structure, settings, pert, groups, args.realizations, args.seed, path,
                         workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
                         deterministic=deterministic, definition=study_definition(args))
-    except StudyInterrupted as exc:
-        print(f"archdem: study interrupted: {exc}; continue with --resume {path}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:
-        print(f"archdem: interrupted; finished runs are stored, continue with --resume {path}", file=sys.stderr)
-        return 130
+    except (StudyInterrupted, KeyboardInterrupt) as exc:
+        return study_stopped(path, exc)
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.fragility.file import write_tables
 

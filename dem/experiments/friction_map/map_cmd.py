@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 
 from dem.common.joints import contact_fraction
 from dem.common.options import (
@@ -21,6 +20,7 @@ from dem.common.options import (
     print_json,
     study_definition,
     study_path,
+    study_stopped,
     workers_option,
 )
 from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
@@ -83,12 +83,8 @@ def _run(args: argparse.Namespace) -> int:
                             settings=settings or None,
                             contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers,
                             definition=study_definition(args))
-    except StudyInterrupted as exc:
-        print(f"archdem: study interrupted: {exc}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:
-        print(f"archdem: interrupted; finished cases are stored, continue with --resume {path}", file=sys.stderr)
-        return 130
+    except (StudyInterrupted, KeyboardInterrupt) as exc:
+        return study_stopped(path, exc)
     if args.plot:
         res.figures(args.plot)
     if args.json:

@@ -122,6 +122,24 @@ def test_cli_bad_input_exits_2(argv, capsys, tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+@pytest.mark.parametrize("stop, code, why", [(KeyboardInterrupt, 130, "interrupted;"),
+                                              (None, 2, "study interrupted: a worker died;")])
+def test_cli_stopped_study_names_its_resume(stop, code, why, tmp_path, monkeypatch, capsys):
+    # a study that stops early (Ctrl-C, or a dead worker) says in one line how to continue it
+    from dem.cli import main
+    from dem.experiments.compare_engines import compare_shake_cmd
+    from dem.studies.sweep import StudyInterrupted
+
+    def stopped(*_a, **_k):
+        raise stop() if stop else StudyInterrupted("a worker died")
+
+    monkeypatch.setattr(compare_shake_cmd, "run_study_cases", stopped)
+    out = tmp_path / "s.h5"
+    assert main(["compare-shake", "--specimens", "Sh06-Sd015", "--engines", "pybullet", "--out", str(out)]) == code
+    (line,) = capsys.readouterr().err.splitlines()
+    assert line == f"archdem: {why} finished cases are stored, continue with --resume {out}"
+
+
 def test_pairwise_and_step_agreement():
     from dem.experiments.compare_engines.shake import pairwise, step_agreement
     from dem.studies.sweep import CaseRecord
