@@ -328,17 +328,30 @@ def test_a_folder_is_not_a_study_file(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_scheduler_lost_mid_study_leaves_a_resumable_study(tmp_path):
+def test_a_scheduler_lost_mid_study_leaves_a_resumable_study(tmp_path, monkeypatch):
     """The cluster goes away while cases run: the study stops with StudyInterrupted (one line for the
     CLI), the finished cases are in the file, and a resume on the local pool completes it."""
+    from dem.studies import sweep
+
     distributed = pytest.importorskip("distributed", reason=NO_DASK)
     cases = _cases(8, sleep=0.6)
     p = tmp_path / "s.h5"
     cluster = distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1, dashboard_address=None)
+    # counted where the study writes: reading the file from this process while it is written makes
+    # HDF5 refuse the writer ("already open for read-only")
+    written = []
+
+    def counted(*args, **kw):
+        rec = write_case(*args, **kw)
+        written.append(rec)
+        return rec
+
+    write_case = sweep._write_case
+    monkeypatch.setattr(sweep, "_write_case", counted)
 
     def stop_later():
-        while not p.exists() or len(load_study(p).by_key) < 2:
-            time.sleep(0.1)
+        while len(written) < 2:
+            time.sleep(0.05)
         cluster.close()
 
     threading.Thread(target=stop_later, daemon=True).start()
