@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Callable
 
 from dem.common.joints import contact_fraction, joint_law, joint_law_text
-from dem.core.settings import DYNAMICS_ENGINE
+from dem.core.settings import DYNAMICS_ENGINE, Settings, dynamics_settings
 from specimens.io import atomic_path, to_json
 
 
@@ -31,6 +31,10 @@ class CampaignContext:
     def law_of(self, spec) -> dict:
         """The contact-law settings of ``spec``'s joints in every simulator step ({} = rigid)."""
         return joint_law(self.joints, spec.id)
+
+    def dynamics_of(self, spec) -> Settings:
+        """The settings of ``spec``'s shakes in the dynamic steps: their engine and its step, its joints."""
+        return dynamics_settings(engine=self.dynamics_engine, **self.law_of(spec))
 
     def joints_text(self) -> str:
         """The joints of the simulator steps, in words for their summaries."""

@@ -13,7 +13,7 @@ from typing import Any
 
 from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
 from dem.core.engines import available_engines
-from dem.core.settings import CONTACT_LAWS, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
+from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.errors import ArchdemInputError
@@ -404,6 +404,14 @@ def add_engine_argument(p: argparse.ArgumentParser, dynamics: bool = False) -> N
     engine = DYNAMICS_ENGINE if dynamics else default_of(Settings, "engine")
     p.add_argument("--engine", choices=tuple(available_engines()), default=engine,
                    help=f"physics engine (default {engine}; see docs/engines.md §5)")
+
+
+def add_dynamics_dt_argument(p: argparse.ArgumentParser, prefix: str = "") -> None:
+    """``--dt`` of a dynamic command: :data:`DYNAMICS_DT` on the shakes' engine, the protocol's step on
+    the others (:func:`dem.core.settings.dynamics_settings`)."""
+    p.add_argument("--dt", type=float, default=None,
+                   help=f"{prefix}time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
+                        f"{default_of(Settings, 'dt'):g} on the other engines)")
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:

@@ -9,6 +9,7 @@ import os
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,
+    add_dynamics_dt_argument,
     add_engine_argument,
     add_friction_arguments,
     arch_from_args,
@@ -27,7 +28,7 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.model import from_assembly, single_block
-from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings, dynamics_settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.fragility.run import (
     DEFAULT_EDGE_LOSS_SD,
     DEFAULT_FRICTION_COV,
@@ -225,8 +226,7 @@ def register(sub) -> None:
                    help=f"coefficient of variation of the friction coefficients (default {DEFAULT_FRICTION_COV:g})")
     add_friction_arguments(p, "nominal ")
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the plane")
-    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
-                        f"{default_of(Settings, 'dt'):g} on the other engines)")
+    add_dynamics_dt_argument(p)
     p.add_argument("--solver-iterations", type=int, default=None,
                    help=f"solver iterations per step (default {default_of(Settings, 'solver_iterations')})")
     add_engine_argument(p, dynamics=True)

@@ -12,7 +12,6 @@ from analytic.rocking.domain import failure_domain
 from analytic.rocking.linkage import minimised_four_bar
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.core.model import as_model
-from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.fragility.figure import fragility_figure
 from dem.experiments.fragility.file import write_tables
 from dem.experiments.fragility.run import (
@@ -52,16 +51,16 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
     pert = Perturbation(edge_loss_sd=DEFAULT_EDGE_LOSS_SD, friction_cov=DEFAULT_FRICTION_COV)
     rows, figures = [], []
     for s in specs:
-        settings = {"engine": ctx.dynamics_engine, **ctx.law_of(s)}
-        settings["dt"] = dynamics_settings(**settings).dt  # written into the study
+        dyn = ctx.dynamics_of(s)
+        settings = {"engine": dyn.engine, "dt": dyn.dt, **ctx.law_of(s)}  # written into the study
         model = as_model(s, config=ctx.config)
-        lam = static_onset(model, Settings(**settings))
+        lam = static_onset(model, dyn)
         groups, det = [], {}
         for f in freqs:
             lo, hi, step = GRIDS[f]
             amps = [round(k * lam, 4) for k in np.arange(lo, hi + 1e-9, step)]
             groups.append((f"{f:g} Hz", "g", [(a, sine_spec(f, a)) for a in amps]))
-            det[f"{f:g} Hz"] = threshold(model, f, dynamics_settings(**settings), ShakeProtocol(), a_min_g=lam,
+            det[f"{f:g} Hz"] = threshold(model, f, dyn, ShakeProtocol(), a_min_g=lam,
                                          a_max_g=2 * amps[-1], workers=ctx.workers, scheduler=ctx.scheduler).amplitude_g
         res = fragility(s.id, arch_structure(s.arch, ctx.config), settings, pert, groups, n, 1,
                         studies_dir(ctx) / f"fragility-{s.id}.h5", workers=ctx.workers, scheduler=ctx.scheduler,

@@ -11,7 +11,7 @@ from analytic.motions.inputs import SampledMotion
 from analytic.motions.records import baseline_correct, read_record, with_zero_tail
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import as_model
-from dem.core.settings import Settings, dynamics_settings
+from dem.core.settings import Settings
 from dem.experiments.shake.run import ShakeProtocol
 from dem.experiments.shake.thresholds import static_onset, threshold
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
@@ -65,7 +65,7 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
-        r = threshold(model, 1.0, dynamics_settings(engine=ctx.dynamics_engine, **ctx.law_of(s)), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
+        r = threshold(model, 1.0, ctx.dynamics_of(s), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
                       tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
                       motion_fn=RecordAtPGA(str(path), t0, t1))
         a = r.amplitude_g

@@ -12,6 +12,7 @@ from dem.common.options import (
     CONTACT_LAW_DESTS,
     add_arch_arguments,
     add_contact_law_arguments,
+    add_dynamics_dt_argument,
     arch_from_args,
     check_density,
     contact_law_settings,
@@ -25,7 +26,7 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.engines import available_engines, check_engine
-from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings
+from dem.core.settings import DYNAMICS_ENGINE
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.step_shake import SHAKE_FREQS
 from specimens.blocks import DEFAULT_DENSITY, discretise
@@ -207,9 +208,7 @@ def register(sub) -> None:
     p.add_argument("--engine", choices=("analytic", "dem", *available_engines()), default="analytic",
                    help=f"analytic linkage, or the DEM: 'dem' runs the shakes' default engine ({DYNAMICS_ENGINE}), "
                         "or name one")
-    p.add_argument("--dt", type=float, default=None,
-                   help=f"DEM: time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
-                        f"{default_of(Settings, 'dt'):g} on the other engines)")
+    add_dynamics_dt_argument(p, "DEM: ")
     p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
                    help="DEM: discrete configuration")
     p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None,

@@ -10,6 +10,7 @@ from analytic.motions.records import ground_motion
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,
+    add_dynamics_dt_argument,
     add_engine_argument,
     add_friction_arguments,
     arch_from_args,
@@ -23,7 +24,7 @@ from dem.common.options import (
     writable_dir,
 )
 from dem.core.model import from_assembly
-from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings, dynamics_settings
+from dem.core.settings import dynamics_settings
 from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_SIMULATED_S, ShakeProtocol, shake
 from specimens.blocks import discretise
 from specimens.errors import ArchdemInputError
@@ -114,8 +115,7 @@ def add_shake_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
     add_friction_arguments(p)
     p.add_argument("--planar", action="store_true", help="constrain the blocks to the arch plane")
-    p.add_argument("--dt", type=float, default=None, help=f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
-                        f"{default_of(Settings, 'dt'):g} on the other engines)")
+    add_dynamics_dt_argument(p)
     add_engine_argument(p, dynamics=True)
     add_contact_law_arguments(p)
     p.add_argument("--tail", type=float, default=default_of(ShakeProtocol, "tail"),

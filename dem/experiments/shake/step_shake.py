@@ -9,7 +9,6 @@ import numpy as np
 from analytic.motions.inputs import SinePulse
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import from_assembly
-from dem.core.settings import dynamics_settings
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.run import shake
 from specimens.blocks import discretise
@@ -48,7 +47,7 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         c = ctx.contact_of(s)
         dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
-                                 settings=dynamics_settings(engine=ctx.dynamics_engine, **ctx.law_of(s)), disc_kw={"contact": c} if c != 1.0 else None,
+                                 settings=ctx.dynamics_of(s), disc_kw={"contact": c} if c != 1.0 else None,
                                  a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01)
         ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))
         fb, tb = _lowest_threshold(ana.get("four-bar")), _lowest_threshold(ana.get("two-bar"))
@@ -102,7 +101,7 @@ def _threshold_histories(spec, dem: dict, ctx: CampaignContext, d: Path) -> list
     model = from_assembly(discretise(spec.arch, config=ctx.config, contact=ctx.contact_of(spec)), name=spec.id)
     out = []
     for what, a_g in (("survival", t["bracket_g"][0]), ("collapse", t["bracket_g"][1])):
-        res = shake(model, SinePulse(a_g * G, t["freq"]), dynamics_settings(engine=ctx.dynamics_engine, **ctx.law_of(spec)), label=spec.id)
+        res = shake(model, SinePulse(a_g * G, t["freq"]), ctx.dynamics_of(spec), label=spec.id)
         png = save_shake_figure(res, d / f"history_{spec.id}_{t['freq']:g}Hz_{what}.png")
         out.append({"path": f"shake/{png.name}",
                     "caption": f"{spec.id}, {t['freq']:g} Hz sine at {a_g:.3f} g ({what} side of the threshold): "
