@@ -245,12 +245,13 @@ def pairwise(records, step: float = 1.0) -> dict:
     return out
 
 
-def step_agreement(records) -> dict:
+def step_agreement(records, steps: tuple[float, float] | None = None) -> dict:
     """How often each engine's features hold when its integration step is changed: ``{engine:
-    {feature: [groups where every step of the engine agrees, groups it ran at two steps or more]}}``."""
+    {feature: [groups where every step of the engine agrees, groups it ran at two steps or more]}}``;
+    ``steps``: compare these two steps only (e.g. ``(0.5, 0.25)``), default every step run."""
     runs: dict[tuple, dict] = {}
     for r in records:
-        if r.ok:
+        if r.ok and (steps is None or r.params["step"] in steps):
             runs.setdefault((r.params["engine"], *_group_key(r.params)), {})[r.params["step"]] = feature_values(r.results)
     out: dict = {}
     for (engine, *_), by_step in runs.items():
@@ -260,4 +261,25 @@ def step_agreement(records) -> dict:
         for name in e:
             e[name][0] += _agree([FEATURES[name](f) for f in by_step.values()])
             e[name][1] += 1
+    return out
+
+
+def step_moves(records, engines=None, feature: str = "first threshold") -> list[dict]:
+    """The groups where an engine's ``feature`` moves with its step (two of its steps read it more
+    than :data:`AGREE_RATIO` apart, or one has it and the other not), in the records' order: ``id``,
+    ``friction``, ``freq``, ``moved`` (the engines that move), ``values`` (``{(engine, step): value}``
+    of every engine and step run on the group); ``engines``: only these (default all)."""
+    groups: dict[tuple, dict] = {}
+    for r in records:
+        if r.ok and (engines is None or r.params["engine"] in engines):
+            groups.setdefault(_group_key(r.params), {})[(r.params["engine"], r.params["step"])] = \
+                FEATURES[feature](feature_values(r.results))
+    out = []
+    for (sid, fr, f), vals in groups.items():
+        by_engine: dict[str, list[float]] = {}
+        for (e, _), v in vals.items():
+            by_engine.setdefault(e, []).append(v)
+        moved = sorted(e for e, v in by_engine.items() if len(v) > 1 and not _agree(v))
+        if moved:
+            out.append({"id": sid, "friction": fr, "freq": f, "moved": moved, "values": vals})
     return out

@@ -159,3 +159,26 @@ def test_pairwise_and_step_agreement():
     sa = step_agreement(records)
     assert sa["a"]["first threshold"] == [1, 1] and sa["c"]["first threshold"] == [0, 1] and sa["b"]["upper edge"] == [1, 1]
     assert pairwise(records, 0.5)["a/c"]["low collapse band"] == [1, 1]
+
+
+def test_step_agreement_of_two_steps_and_the_groups_that_move():
+    from dem.experiments.compare_engines.shake import step_agreement, step_moves
+    from dem.studies.sweep import CaseRecord
+
+    far = _res(1.4, [(1.3, False, "-"), (1.4, True, "rocking"), (1.7, True, "rocking")])
+    near = _res(0.72, [(0.6, False, "-"), (0.72, True, "rocking"), (1.7, True, "rocking")])
+
+    def rec(engine, step, freq, res):
+        p = {"id": "S", "friction": "joints", "freq": freq, "engine": engine, "step": step}
+        return CaseRecord(f"{engine}{step}{freq}", p, "ok", res)
+
+    # engine a: 0.7 g at x1 and x0.5, 1.4 g at x0.25 (moves on the finer pair only); b: one step each
+    records = [rec("a", 1.0, 6.0, BANDED), rec("a", 0.5, 6.0, near), rec("a", 0.25, 6.0, far),
+               rec("b", 1.0, 6.0, far), rec("b", 1.0, 2.0, far), rec("a", 1.0, 2.0, far), rec("a", 0.5, 2.0, far)]
+    assert step_agreement(records, (1.0, 0.5))["a"]["first threshold"] == [2, 2]
+    assert step_agreement(records, (0.5, 0.25))["a"]["first threshold"] == [0, 1]
+    assert step_agreement(records)["a"]["first threshold"] == [1, 2]  # every step of the engine at once
+    (m,) = step_moves(records)
+    assert (m["freq"], m["moved"]) == (6.0, ["a"])
+    assert m["values"][("a", 0.25)] == 1.4 and m["values"][("b", 1.0)] == 1.4 and len(m["values"]) == 4
+    assert step_moves(records, engines=("b",)) == []
