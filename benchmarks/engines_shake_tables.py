@@ -54,7 +54,7 @@ def _order(engine_step: tuple) -> tuple:
     return (list(SHORT).index(engine_step[0]) if engine_step[0] in SHORT else 9, -engine_step[1])
 
 
-def tables(records, steps=None, moves_of=None) -> str:
+def tables(records, steps: set[float] | None = None, moves_of: tuple[str, ...] | None = None) -> str:
     # a study file may hold cases of another step definition (another dt for the same factor): left out
     every = [r for r in records if r.ok and math.isclose(r.params["dt"], case_dt(r.params["engine"], r.params["step"]))]
     ok = [r for r in every if steps is None or r.params["step"] in steps]
@@ -108,6 +108,8 @@ def _finer_steps(records, moves_of) -> list[str]:
     by_engine: dict[str, set] = {}
     for r in records:
         by_engine.setdefault(r.params["engine"], set()).add(r.params["step"])
+    if not any(len(s) > 2 for s in by_engine.values()):
+        return []
     rows = []
     for e in sorted(by_engine, key=lambda e: _order((e, 0))):
         st = sorted(by_engine[e], reverse=True)
@@ -115,8 +117,6 @@ def _finer_steps(records, moves_of) -> list[str]:
             v = step_agreement(records, (coarse, fine)).get(e)
             if v:
                 rows.append(f"| {e} | ×{coarse:g} → ×{fine:g} | " + " | ".join(f"{a} / {n}" for a, n in v.values()) + " |")
-    if not any(len(s) > 2 for s in by_engine.values()):
-        return []
     out = ["", "**From one step to the next** (groups where both steps' readings agree / groups run at both):", "",
            "| engine | steps | " + " | ".join(COMPARED) + " |", "|---" * (len(COMPARED) + 2) + "|", *rows]
     moves = step_moves(records, moves_of)

@@ -264,7 +264,7 @@ def step_agreement(records, steps: tuple[float, float] | None = None) -> dict:
     return out
 
 
-def step_moves(records, engines=None, feature: str = "first threshold") -> list[dict]:
+def step_moves(records, engines: tuple[str, ...] | None = None, feature: str = "first threshold") -> list[dict]:
     """The groups where an engine's ``feature`` moves with its step (two of its steps read it more
     than :data:`AGREE_RATIO` apart, or one has it and the other not), in the records' order: ``id``,
     ``friction``, ``freq``, ``moved`` (the engines that move), ``values`` (``{(engine, step): value}``
