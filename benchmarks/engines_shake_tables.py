@@ -110,11 +110,14 @@ def _finer_steps(records, moves_of) -> list[str]:
         by_engine.setdefault(r.params["engine"], set()).add(r.params["step"])
     if not any(len(s) > 2 for s in by_engine.values()):
         return []
-    rows = []
+    rows, by_pair = [], {}
     for e in sorted(by_engine, key=lambda e: _order((e, 0))):
         st = sorted(by_engine[e], reverse=True)
-        for coarse, fine in zip(st, st[1:]):
-            v = step_agreement(records, (coarse, fine)).get(e)
+        for pair in zip(st, st[1:]):
+            if pair not in by_pair:  # one count per pair of steps serves every engine
+                by_pair[pair] = step_agreement(records, pair)
+            coarse, fine = pair
+            v = by_pair[pair].get(e)
             if v:
                 rows.append(f"| {e} | ×{coarse:g} → ×{fine:g} | " + " | ".join(f"{a} / {n}" for a, n in v.values()) + " |")
     out = ["", "**From one step to the next** (groups where both steps' readings agree / groups run at both):", "",

@@ -183,6 +183,16 @@ def _group_key(p: dict) -> tuple:
     return (p["id"], p["friction"], p["freq"])
 
 
+def _by_group(records, keep=None) -> dict[tuple, dict]:
+    """The finished cases (those whose parameters pass ``keep``) by (specimen, friction, frequency),
+    in the records' order, then by (engine, step): their results."""
+    groups: dict[tuple, dict] = {}
+    for r in records:
+        if r.ok and (keep is None or keep(r.params)):
+            groups.setdefault(_group_key(r.params), {})[(r.params["engine"], r.params["step"])] = r.results
+    return groups
+
+
 def case_rows(records) -> list[dict]:
     """One row per finished case (study records of :func:`shake_case`): its parameters, the first
     collapse, the bands as text (``0.73-0.82 C rocking``), the scanned range, cost."""
@@ -204,12 +214,8 @@ def case_rows(records) -> list[dict]:
 def classify(records) -> list[dict]:
     """:func:`features` of every (specimen, friction, frequency) that more than one engine has
     finished, in the records' order: ``id``, ``friction``, ``freq``, ``engines``, ``features``."""
-    groups: dict[tuple, dict] = {}
-    for r in records:
-        if r.ok:
-            groups.setdefault(_group_key(r.params), {})[(r.params["engine"], r.params["step"])] = r.results
     out = []
-    for (sid, fr, f), res in groups.items():
+    for (sid, fr, f), res in _by_group(records).items():
         engines = sorted({e for e, _ in res})
         if len(engines) > 1:
             out.append({"id": sid, "friction": fr, "freq": f, "engines": engines, "features": features(res)})
@@ -230,10 +236,8 @@ def pairwise(records, step: float = 1.0) -> dict:
     """How often two engines agree, at time step ``step`` (x the default): ``{"a/b": {feature:
     [agreeing groups, groups both ran]}}`` over the (specimen, friction, frequency) groups, with the
     rule of :func:`features` (the same reading within :data:`AGREE_RATIO`, or both without it)."""
-    groups: dict[tuple, dict] = {}
-    for r in records:
-        if r.ok and r.params["step"] == step:
-            groups.setdefault(_group_key(r.params), {})[r.params["engine"]] = feature_values(r.results)
+    groups = {k: {e: feature_values(res) for (e, _), res in g.items()}
+              for k, g in _by_group(records, lambda p: p["step"] == step).items()}
     getters = {k: FEATURES[k] for k in COMPARED}
     engines = sorted({e for g in groups.values() for e in g})
     out: dict = {}
@@ -250,9 +254,9 @@ def step_agreement(records, steps: tuple[float, float] | None = None) -> dict:
     {feature: [groups where every step of the engine agrees, groups it ran at two steps or more]}}``;
     ``steps``: compare these two steps only (e.g. ``(0.5, 0.25)``), default every step run."""
     runs: dict[tuple, dict] = {}
-    for r in records:
-        if r.ok and (steps is None or r.params["step"] in steps):
-            runs.setdefault((r.params["engine"], *_group_key(r.params)), {})[r.params["step"]] = feature_values(r.results)
+    for key, g in _by_group(records, None if steps is None else lambda p: p["step"] in steps).items():
+        for (engine, step), res in g.items():
+            runs.setdefault((engine, *key), {})[step] = feature_values(res)
     out: dict = {}
     for (engine, *_), by_step in runs.items():
         if len(by_step) < 2:
@@ -269,13 +273,9 @@ def step_moves(records, engines: tuple[str, ...] | None = None, feature: str = "
     than :data:`AGREE_RATIO` apart, or one has it and the other not), in the records' order: ``id``,
     ``friction``, ``freq``, ``moved`` (the engines that move), ``values`` (``{(engine, step): value}``
     of every engine and step run on the group); ``engines``: only these (default all)."""
-    groups: dict[tuple, dict] = {}
-    for r in records:
-        if r.ok and (engines is None or r.params["engine"] in engines):
-            groups.setdefault(_group_key(r.params), {})[(r.params["engine"], r.params["step"])] = \
-                FEATURES[feature](feature_values(r.results))
     out = []
-    for (sid, fr, f), vals in groups.items():
+    for (sid, fr, f), g in _by_group(records, None if engines is None else lambda p: p["engine"] in engines).items():
+        vals = {k: FEATURES[feature](feature_values(res)) for k, res in g.items()}
         by_engine: dict[str, list[float]] = {}
         for (e, _), v in vals.items():
             by_engine.setdefault(e, []).append(v)
