@@ -3,8 +3,9 @@
 :func:`assemble` turns named block outlines [m] (each a closed polygon, optionally with its
 convex pieces) and supports into a :class:`DrawnAssembly`: one rigid body per block, joints
 found where two blocks' faces (or a block's and a support's) lie on one line within ``tol`` and
-overlap, partial overlaps included. Every analysis that reads bodies and joints runs on it; one
-that needs a two-centred arch's parameters says so in one line.
+overlap, partial overlaps included; outlines that come close without touching are its gaps
+(:class:`Gap`), named wherever they leave blocks without support. Every analysis that reads bodies and
+joints runs on it; one that needs a two-centred arch's parameters says so in one line.
 
 Order and orientation (the rules of :func:`specimens.blocks.discretise`, so that a catalogue
 arch drawn and read back is the same assembly): when the blocks form one chain from the ground
@@ -23,7 +24,6 @@ from typing import Sequence
 import numpy as np
 
 from specimens.blocks import (
-    DEFAULT_DENSITY,
     Assembly,
     Block,
     Body,
@@ -35,11 +35,18 @@ from specimens.blocks import (
     check_contact,
     joint_normal,
 )
+from specimens.constants import DRAWN_DENSITY
 from specimens.errors import ArchdemInputError
 from specimens.sections import is_convex, polygon_properties, signed_area
 
 #: Default contact tolerance, as a fraction of the drawing's largest extent.
 RELATIVE_TOLERANCE = 1e-5
+#: Two outlines with no joint between them that come closer than this fraction of the thinner block's
+#: thickness (twice its area over its perimeter) are a gap: most likely a joint drawn open. A fraction of
+#: the blocks, not of the drawing: the block two courses up in a tall wall is a course away, not a gap.
+GAP_FRACTION = 0.25
+#: The configuration of a drawn assembly: its bodies are as drawn (no glued or free crown).
+DRAWN_CONFIG = "drawn"
 #: Most blocks a drawing may hold (each adds a body and joints to every analysis).
 MAX_BLOCKS = 2000
 #: Parameters of a parametric arch that a drawn assembly does not have (see DrawnAssembly.__getattr__).
@@ -58,6 +65,46 @@ class DrawnBlock:
     depth: float | None = None
 
 
+def _length_text(d_m: float) -> str:
+    """A short length for a message, in mm (``5.0 mm``, ``0.05 mm``)."""
+    mm = 1e3 * float(d_m)
+    return f"{mm:.1f} mm" if mm >= 1 else f"{mm:.2g} mm"
+
+
+@dataclass(frozen=True)
+class Gap:
+    """Block ``a`` and ``b`` (a block's name, ``support k`` or ``the ground``: see ``kind``) come
+    ``distance_m`` [m] close without touching (no joint between them); ``at``: the gap's mid-point [m]."""
+
+    a: str
+    b: str
+    distance_m: float
+    at: tuple[float, float]
+    kind: str = "block"  # block | support | ground
+
+    def describe(self) -> str:
+        d = _length_text(self.distance_m)
+        if self.kind == "ground":
+            return f"block {self.a} is {d} above the ground"
+        if self.kind == "support":
+            return f"block {self.a} is {d} from {self.b}"
+        return f"blocks {self.a} and {self.b} are {d} apart"
+
+    def to_dict(self) -> dict:
+        return {"a": self.a, "b": self.b, "distance_m": float(self.distance_m), "at": [float(v) for v in self.at],
+                "kind": self.kind, "text": self.describe()}
+
+
+def gaps_text(gaps: Sequence[Gap], most: int = 3) -> str:
+    """The gaps in one line: ``blocks B4 and B5 are 5.0 mm apart; ...`` (the first ``most``)."""
+    text = "; ".join(g.describe() for g in gaps[:most])
+    return text + (f" and {len(gaps) - most} more gap(s)" if len(gaps) > most else "")
+
+
+def _names_text(names: Sequence[str]) -> str:
+    return ", ".join(names) if len(names) <= 6 else f"{names[0]} ... {names[-1]} ({len(names)} blocks)"
+
+
 @dataclass(frozen=True)
 class DrawnAssembly(Assembly):
     """An assembly read from a drawing: no parametric arch (``arch`` is None), one body per block.
@@ -65,13 +112,15 @@ class DrawnAssembly(Assembly):
     ``source``: where it came from (file, format, units, depth, density, tolerance);
     ``length_scale_m``: the length the analyses scale their numerics by [m]; ``size_m``: the
     collapse criterion's length [m]; ``chain``: the blocks form one chain from the ground to the
-    ground (the four-hinge enumeration applies).
+    ground (the four-hinge enumeration applies); ``gaps``: outlines that come close without a joint
+    between them (:class:`Gap`), found when reading.
     """
 
     source: dict = field(default_factory=dict)
     length_scale_m: float = 1.0
     size_m: float = 1.0
     chain: bool = False
+    gaps: tuple[Gap, ...] = ()
 
     def __getattr__(self, name: str):
         # reached only for attributes a dataclass field or property does not provide
@@ -79,8 +128,8 @@ class DrawnAssembly(Assembly):
             raise ArchdemInputError(
                 f"{self.source.get('file') or 'this drawing'} holds blocks, not a two-centred arch: this needs the "
                 f"arch's parameters ({name}; the continuous ring, the two-bar, the calibrated contact and the "
-                "imperfect-joint ensembles do); a drawing takes the LP, tilt, shake, threshold, fragility, modes, "
-                "assess, draw, mesh, and rock/domain with --layout discrete")
+                "imperfect-joint ensembles do); a drawing takes analytic (the LP), tilt, shake, threshold, fragility, "
+                "modes, assess, draw, mesh, and rock/domain with --layout discrete")
         raise AttributeError(name)
 
     @property
@@ -111,9 +160,42 @@ class DrawnAssembly(Assembly):
         return self.bodies[self.crown_index]
 
     def parameters(self) -> dict:
-        return {"drawing": dict(self.source), "density": self.density, "contact": self.contact,
+        return {"config": self.config, "drawing": dict(self.source), "density": self.density, "contact": self.contact,
                 "length_scale": self.length_scale, "size": self.size,
+                **({"gaps": [g.to_dict() for g in self.gaps]} if self.gaps else {}),
                 **({"bands": {j.name: list(j.band) for j in self.joints}} if self.imperfect else {})}
+
+    def parts(self) -> list[tuple[str, ...]]:
+        """The blocks grouped by the joints between them (supports not counted), in body order: one
+        group when every block reaches every other through joints."""
+        root = list(range(len(self.bodies)))
+
+        def find(k: int) -> int:
+            while root[k] != k:
+                root[k] = root[root[k]]
+                k = root[k]
+            return k
+
+        for j in self.joints:
+            if j.a >= 0 and j.b >= 0:
+                root[find(j.a)] = find(j.b)
+        groups: dict[int, list[str]] = {}
+        for k, b in enumerate(self.bodies):
+            groups.setdefault(find(k), []).append(b.name)
+        return [tuple(g) for g in groups.values()]
+
+    def cannot_stand(self, label: str) -> str:
+        """One line saying that ``label`` (these blocks) cannot stand under its own weight, naming what
+        explains it when the drawing shows it: its gaps, and the parts no joint joins."""
+        why = []
+        if self.gaps:
+            why.append(f"{gaps_text(self.gaps)} (no joint between them)")
+        parts = self.parts()
+        if len(parts) > 1:
+            why.append(f"its blocks stand in {len(parts)} parts that no joint joins: "
+                       + " | ".join(_names_text(p) for p in parts[:4]) + (" | ..." if len(parts) > 4 else ""))
+        return (f"{label} cannot stand under its own weight (no equilibrium even without sliding)"
+                + (": " + "; ".join(why) if why else ""))
 
     def with_bands(self, bands: dict[str, tuple[float, float]], contact: float | None = None) -> "DrawnAssembly":
         """The same blocks with each named joint touching within its own band (fractions of its depth from
@@ -139,7 +221,9 @@ class DrawnAssembly(Assembly):
                 "joints": [{"name": j.name, "a": j.a, "b": j.b, "p_i": j.p_i.tolist(), "p_e": j.p_e.tolist()}
                            for j in self.joints],
                 "density": self.density, "length_scale": self.length_scale_m, "size": self.size_m,
-                "chain": self.chain, "source": dict(self.source)}
+                "chain": self.chain, "source": dict(self.source),
+                **({"gaps": [g.to_dict() for g in self.gaps]} if self.gaps else {})}
+
     def with_contact(self, contact: float) -> "DrawnAssembly":
         """The same blocks with every joint touching within its central ``contact`` fraction
         (pieces relieved at the joints; masses kept)."""
@@ -166,9 +250,11 @@ def from_dict(d: dict) -> DrawnAssembly:
     for k, j in enumerate(d["joints"]):
         p, q = np.asarray(j["p_i"], float), np.asarray(j["p_e"], float)
         joints.append(Joint(k, j["name"], int(j["a"]), int(j["b"]), p, q, joint_normal(p, q), 0.0))
-    return DrawnAssembly(None, "free", "drawn", 0, 0.0, float(d["density"]), 0, tuple(blocks), tuple(bodies),
+    gaps = tuple(Gap(g["a"], g["b"], float(g["distance_m"]), tuple(g["at"]), g.get("kind", "block"))
+                 for g in d.get("gaps", ()))
+    return DrawnAssembly(None, DRAWN_CONFIG, "drawn", 0, 0.0, float(d["density"]), 0, tuple(blocks), tuple(bodies),
                          tuple(joints), np.zeros(0), 1.0, False, None, dict(d.get("source", {})),
-                         float(d["length_scale"]), float(d["size"]), bool(d["chain"]))
+                         float(d["length_scale"]), float(d["size"]), bool(d["chain"]), gaps)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -365,6 +451,7 @@ class _Contact:
     p: np.ndarray
     q: np.ndarray
     n: np.ndarray  # from a to b
+    support: int = -1  # which support when b is -1 (-1: the ground line)
 
 
 def _near_pairs(polys: list[np.ndarray], supports: list[np.ndarray], tol: float) -> list[tuple[int, int]]:
@@ -391,7 +478,7 @@ def _find_contacts(polys: list[np.ndarray], supports: list[np.ndarray], tol: flo
             for e2 in _edges(other):
                 c = _contact(e1, e2, tol, verts)
                 if c is not None:
-                    out.append(_Contact(i, j if j >= 0 else -1, c[0], c[1], c[2]))
+                    out.append(_Contact(i, j if j >= 0 else -1, c[0], c[1], c[2], -1 - j if j < 0 else -1))
     return _merge_collinear(out, tol)
 
 
@@ -412,6 +499,75 @@ def _merge_collinear(cs: list[_Contact], tol: float) -> list[_Contact]:
     return out
 
 
+# ---------------------------------------------------------------------------------------------
+# gaps: outlines that come close without a joint between them
+# ---------------------------------------------------------------------------------------------
+def _thickness(poly: np.ndarray) -> float:
+    """Twice the area over the perimeter [m]: about the smaller side of a block, whatever its shape."""
+    per = float(np.linalg.norm(np.diff(np.vstack([poly, poly[:1]]), axis=0), axis=1).sum())
+    return 2.0 * abs(signed_area(poly)) / per
+
+
+def _closest(a: np.ndarray, b: np.ndarray) -> tuple[float, np.ndarray]:
+    """Distance between two outlines that do not overlap, and the middle of the gap: the mean of the
+    mid-points of every closest pair (a vertex of one, a point of the other's edge), so that two parallel
+    faces give the middle of their common part, not a corner."""
+    dists, mids = [], []
+    for pts, poly in ((a, b), (b, a)):
+        for p0, p1 in _edges(poly):
+            d = p1 - p0
+            t = np.clip((pts - p0) @ d / float(d @ d), 0.0, 1.0)
+            foot = p0 + t[:, None] * d
+            dists.append(np.linalg.norm(pts - foot, axis=1))
+            mids.append(0.5 * (pts + foot))
+    dist, mid = np.concatenate(dists), np.vstack(mids)
+    best = float(dist.min())
+    return best, mid[dist <= best * (1 + 1e-9) + 1e-15].mean(axis=0)
+
+
+def _find_gaps(polys: list[np.ndarray], names: list[str], supports: list[np.ndarray], contacts: list[_Contact],
+               tol: float) -> list[Gap]:
+    """Pairs of outlines (block-block, block-support, block-ground line) with no joint between them that
+    come closer than GAP_FRACTION of the thinner block, with nothing drawn in between."""
+    thick = [_thickness(p) for p in polys]
+    reach = GAP_FRACTION * max(thick)
+    joined = {(c.a, c.b) for c in contacts if c.b >= 0} | {(c.a, -1 - c.support) for c in contacts if c.support >= 0}
+    shapes = polys + supports
+    lo = np.array([p.min(0) for p in shapes])
+    hi = np.array([p.max(0) for p in shapes])
+
+    def filled(m: np.ndarray, skip: set[int]) -> bool:
+        near = np.flatnonzero(np.all((lo <= m) & (hi >= m), axis=1))
+        return any(_point_in(shapes[k], m) for k in near if k not in skip)
+
+    out: list[Gap] = []
+    for i, j in _near_pairs(polys, supports, reach) if reach > tol else ():
+        if (i, j) in joined:
+            continue
+        other = polys[j] if j >= 0 else supports[-1 - j]
+        lim = GAP_FRACTION * (min(thick[i], thick[j]) if j >= 0 else thick[i])
+        d, mid = _closest(polys[i], other)
+        if tol < d <= lim and not filled(mid, {i, j if j >= 0 else len(polys) - 1 - j}):
+            out.append(Gap(names[i], names[j], d, (float(mid[0]), float(mid[1]))) if j >= 0 else
+                       Gap(names[i], f"support {-j}", d, (float(mid[0]), float(mid[1])), "support"))
+    if not supports:  # the ground is the line through the lowest vertex
+        y0 = min(float(p[:, 1].min()) for p in polys)
+        grounded = {c.a for c in contacts if c.b < 0}
+        for i, p in enumerate(polys):
+            k = int(np.argmin(p[:, 1]))
+            d = float(p[k, 1]) - y0
+            mid = np.array([p[k, 0], y0 + 0.5 * d])
+            if i not in grounded and tol < d <= GAP_FRACTION * thick[i] and not filled(mid, {i}):
+                out.append(Gap(names[i], "the ground", d, (float(mid[0]), float(mid[1])), "ground"))
+    return sorted(out, key=lambda g: g.distance_m)
+
+
+def _gap_note(gaps: Sequence[Gap], names: Sequence[str] | None = None) -> str:
+    """``" (blocks B4 and B5 are 5.0 mm apart)"``: the gaps that involve ``names`` (all: None), or ''."""
+    hit = [g for g in gaps if names is None or g.a in names or (g.kind == "block" and g.b in names)]
+    return f" ({gaps_text(hit)})" if hit else ""
+
+
 def _ground_contacts(polys: list[np.ndarray], tol: float) -> list[_Contact]:
     """Without supports: every block edge lying on the horizontal line through the lowest vertex."""
     y0 = min(float(p[:, 1].min()) for p in polys)
@@ -426,7 +582,7 @@ def _ground_contacts(polys: list[np.ndarray], tol: float) -> list[_Contact]:
 # ---------------------------------------------------------------------------------------------
 # the assembly
 # ---------------------------------------------------------------------------------------------
-def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), density: float = DEFAULT_DENSITY,
+def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), density: float = DRAWN_DENSITY,
              depth: float | None = None, tol: float | None = None, joint_labels: Sequence[tuple[str, np.ndarray]] = (),
              source: dict | None = None, length_scale: float | None = None, size: float | None = None) -> DrawnAssembly:
     """The assembly of ``blocks`` [m] standing on ``supports`` (fixed polygons [m]; none: the ground is
@@ -435,7 +591,8 @@ def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), 
     (default RELATIVE_TOLERANCE x the largest extent); ``joint_labels``: (name, point) naming the
     joint whose mid-point is within ``tol`` of the point; ``length_scale`` / ``size`` [m]: the
     analyses' length and the collapse criterion's (default: half the largest extent; the shortest
-    joint)."""
+    joint). Outlines that come close without touching are the assembly's ``gaps`` (:class:`Gap`),
+    named in the refusal of a block they leave without support."""
     if not (isinstance(density, (int, float)) and math.isfinite(density) and density > 0):
         raise ArchdemInputError(f"density must be > 0 kg/m^3, got {density!r}")
     if depth is not None and not (isinstance(depth, (int, float)) and math.isfinite(depth) and depth > 0):
@@ -496,14 +653,16 @@ def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), 
         depths.append(float(d))
 
     contacts = _find_contacts(polys, sups, tol) if sups else (_find_contacts(polys, [], tol) + _ground_contacts(polys, tol))
+    gaps = _find_gaps(polys, names, sups, contacts, tol)
     touched = {c.a for c in contacts} | {c.b for c in contacts}
     loose = [names[i] for i in range(len(polys)) if i not in touched]
     if loose:
         raise ArchdemInputError(f"block {loose[0]} touches no other block and no support"
-                                + (f" (nor do {len(loose) - 1} more)" if len(loose) > 1 else ""))
+                                + (f" (nor do {len(loose) - 1} more)" if len(loose) > 1 else "") + _gap_note(gaps, loose))
     if not any(c.b < 0 for c in contacts):
-        raise ArchdemInputError("no block stands on a support or on the ground")
-    _check_grounded(len(polys), contacts, names)
+        raise ArchdemInputError("no block stands on a support or on the ground"
+                                + _gap_note([g for g in gaps if g.kind != "block"]))
+    _check_grounded(len(polys), contacts, names, gaps)
 
     order, links, chain = _order(polys, contacts)
     pos = {blk: k for k, blk in enumerate(order)}
@@ -523,11 +682,12 @@ def assemble(blocks: Sequence[DrawnBlock], supports: Sequence[np.ndarray] = (), 
     sz = min(j.length for j in joints) if size is None else float(size)
     src = dict(source or {})
     src.setdefault("tolerance_m", tol)
-    return DrawnAssembly(None, "free", "drawn", 0, 0.0, float(density), 0, tuple(blks), tuple(bodies), tuple(joints),
-                         np.zeros(0), 1.0, False, None, src, float(lscale), float(sz), bool(chain))
+    return DrawnAssembly(None, DRAWN_CONFIG, "drawn", 0, 0.0, float(density), 0, tuple(blks), tuple(bodies),
+                         tuple(joints), np.zeros(0), 1.0, False, None, src, float(lscale), float(sz), bool(chain),
+                         tuple(gaps))
 
 
-def _check_grounded(n: int, contacts: list[_Contact], names: list[str]) -> None:
+def _check_grounded(n: int, contacts: list[_Contact], names: list[str], gaps: Sequence[Gap] = ()) -> None:
     """Every block connected to the ground through joints (else the first loose group, in one line)."""
     adj: dict[int, set[int]] = {i: set() for i in range(-1, n)}
     for c in contacts:
@@ -542,7 +702,7 @@ def _check_grounded(n: int, contacts: list[_Contact], names: list[str]) -> None:
     rest = [names[i] for i in range(n) if i not in seen]
     if rest:
         raise ArchdemInputError(f"blocks {', '.join(rest[:5])}{' ...' if len(rest) > 5 else ''} touch each other but "
-                                "not the ground or a support")
+                                "not the ground or a support" + _gap_note(gaps, rest))
 
 
 def _order(polys: list[np.ndarray], contacts: list[_Contact]):

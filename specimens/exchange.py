@@ -10,7 +10,8 @@ name): a name containing ``ground`` or ``support`` marks a support (fixed); ``pi
 pieces of the block whose outline holds them (DXF) or named ``<block>/<k>`` (CSV, OBJ);
 ``joints``: a label at a joint's mid-point names it; ``depth <D>`` states the blocks' depth in
 the drawing's units. A comment line ``# archdem: key=value ...`` (CSV, OBJ) or the DXF's custom
-properties ``archdem:key`` carry the length scale and collapse length archdem's writers used.
+properties ``archdem:key`` carry the length scale, collapse length and density [kg/m^3] archdem's
+writers used (a drawing that states no density is :data:`specimens.constants.DRAWN_DENSITY`).
 """
 from __future__ import annotations
 
@@ -22,7 +23,8 @@ from pathlib import Path
 
 import numpy as np
 
-from specimens.blocks import DEFAULT_DENSITY, Assembly
+from specimens.blocks import Assembly
+from specimens.constants import DRAWN_DENSITY
 from specimens.drawn import DrawnAssembly, DrawnBlock, _merge, _point_in, _self_intersects, assemble
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path
@@ -34,7 +36,7 @@ UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
 DXF_UNITS = {1: "in", 2: "ft", 4: "mm", 5: "cm", 6: "m"}
 FORMATS = {".dxf": "dxf", ".csv": "csv", ".obj": "obj", ".stl": "stl"}
 _DEPTH = re.compile(r"depth[ _-]*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)", re.IGNORECASE)
-_META_KEYS = ("length_scale", "size")
+_META_KEYS = ("length_scale", "size", "density")
 #: The example structure shipped with archdem: a pointed arch on piers as built (specimens/data/README.md).
 EXAMPLE_DRAWING = Path(__file__).resolve().parent / "data" / "survey-arch-on-piers.dxf"
 
@@ -69,12 +71,14 @@ def _units(stated: str | None, option: str | None, path: Path) -> float:
 # reading
 # ---------------------------------------------------------------------------------------------
 def read_assembly(path: str | Path, units: str | None = None, depth: float | None = None,
-                  density: float = DEFAULT_DENSITY, tol: float | None = None, up: str | None = None) -> DrawnAssembly:
+                  density: float | None = None, tol: float | None = None, up: str | None = None) -> DrawnAssembly:
     """The assembly drawn in ``path`` (``.dxf``, ``.csv``, ``.obj``, ``.stl``).
 
     ``units``: the drawing's length unit (m, cm, mm, in, ft) when the file does not state it (a
     DXF's ``$INSUNITS``; default m); ``depth`` [m]: the blocks' out-of-plane depth where the
-    drawing does not give it (a mesh gives its own); ``density`` [kg/m^3]; ``tol`` [m]: contact
+    drawing does not give it (a mesh gives its own); ``density`` [kg/m^3] of every block (default: the
+    one the file states, else :data:`~specimens.constants.DRAWN_DENSITY`; the source records which, as
+    ``density_from``: given, file or default); ``tol`` [m]: contact
     tolerance (default: :data:`specimens.drawn.RELATIVE_TOLERANCE` of the drawing's extent);
     ``up``: the vertical axis of a mesh (``y`` or ``z``; default: z if the blocks' depth runs
     along y, else y)."""
@@ -89,11 +93,16 @@ def read_assembly(path: str | Path, units: str | None = None, depth: float | Non
     reader = {"dxf": _read_dxf, "csv": _read_csv, "obj": _read_mesh, "stl": _read_mesh}[fmt]
     data = reader(p, units, up)
     scale = data["scale"]
+    meta = data.get("meta", {})
+    stated = meta.pop("density", None)
+    origin = "given" if density is not None else "file" if stated is not None else "default"
+    density = density if density is not None else stated if stated is not None else DRAWN_DENSITY
     source = {"file": p.name, "format": fmt, "sha256": hashlib.sha256(p.read_bytes()).hexdigest(),
-              "units": data["units"], "depth_m": depth, "density": float(density)}
+              "units": data["units"], "depth_m": depth, "density": float(density), "density_from": origin}
+    if depth is not None:  # how many blocks the option gave their depth (the others' layers state it)
+        source["blocks_at_depth_m"] = sum(b.depth is None for b in data["blocks"])
     blocks = [DrawnBlock(b.name, b.outline * scale, tuple(q * scale for q in b.pieces) if b.pieces else None,
                          b.depth * scale if b.depth is not None else None) for b in data["blocks"]]
-    meta = data.get("meta", {})
     return assemble(blocks, [s * scale for s in data["supports"]], density=density, depth=depth, tol=tol,
                     joint_labels=[(n, q * scale) for n, q in data["joints"]], source=source,
                     length_scale=meta.get("length_scale"), size=meta.get("size"))
@@ -483,7 +492,8 @@ def _support_pads(asm) -> list[np.ndarray]:
 
 
 def _meta(asm) -> dict[str, float]:
-    return {"length_scale": float(asm.length_scale), "size": float(asm.size)}
+    # the density too: a catalogue arch read back keeps its masses (drawings default to another density)
+    return {"length_scale": float(asm.length_scale), "size": float(asm.size), "density": float(asm.density)}
 
 
 def _check_writable(asm) -> None:

@@ -107,6 +107,57 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
     }
 
 
+#: The analyses of `archdem analytic` that need a two-centred arch's parameters, which a drawing's blocks lack.
+ARCH_ONLY_ANALYSES = ("the continuous ring (and its --effective-thickness, --min-spacing)",
+                      "the two-bar sliding model and its mu*",
+                      "the linkages of the continuous ring (rock and domain take --layout discrete)")
+
+
+def analyse_drawing(asm, mu_joint: float, mu_base: float) -> dict:
+    """The limit analysis of a drawing's blocks (:class:`specimens.drawn.DrawnAssembly`, its contact
+    applied) as a JSON-ready dict: the static LP at the frictions and without sliding (the LP with
+    ``mu_joint`` infinite at ``mu_base`` too, the reference of the LP's mu*), each with its hinges (joint,
+    face, the bodies the joint lies between; ``ground`` for a support) and the joints that slide or open;
+    the four-hinge enumeration when the blocks form one chain. The arch-only entries are None
+    (:data:`ARCH_ONLY_ANALYSES`). ``stands``: without sliding, the blocks stand under their own weight."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+
+    inf = float("inf")
+    lp, ns = solve_lp(asm, mu_joint, mu_base), solve_lp(asm, inf, inf)
+    ns_base = ns if mu_base == inf else solve_lp(asm, inf, mu_base)
+
+    def between(name: str) -> list[str]:
+        j = asm.joint(name)
+        return [asm.bodies[k].name if k >= 0 else "ground" for k in (j.a, j.b)]
+
+    def hinges(res) -> list[dict]:
+        return [{"joint": k, "face": f, "between": between(k), "sliding": res.joint_states[k] == "hinge+sliding"}
+                for k, f in res.hinges]
+
+    def moving(res) -> list[dict]:
+        return [{"joint": k, "state": st, "between": between(k)} for k, st in res.joint_states.items()
+                if st in ("sliding", "open")]
+
+    kin = enumerate_mechanisms(asm) if asm.is_chain else None
+    return {
+        "drawing": dict(asm.source), "config": asm.config, "n_blocks": asm.n_bodies, "n_joints": len(asm.joints),
+        "chain": asm.is_chain, "density": asm.density, "density_from": asm.source.get("density_from", ""),
+        "total_mass_kg": asm.total_mass, "contact": asm.contact, "mu_joint": mu_joint, "mu_base": mu_base,
+        "gaps": [g.to_dict() for g in asm.gaps],
+        "lambda_lp": lp.lam, "lp_status": lp.message, "hinges_lp": hinges(lp), "moving_lp": moving(lp),
+        "joints_lp": {k: {"state": st, "between": between(k), **lp.forces.get(k, {})}
+                      for k, st in lp.joint_states.items()},
+        "lambda_no_sliding": ns.lam, "hinges_no_sliding": hinges(ns), "moving_no_sliding": moving(ns),
+        "lambda_no_joint_sliding": ns_base.lam,
+        "lambda_discrete": kin.lam if kin is not None else None,
+        "hinges_discrete": [{"joint": j, "face": f, "between": between(j)} for j, f in kin.hinges] if kin else [],
+        "lambda_continuous": None, "hinges_continuous": [], "lambda_two_bar": None, "lambda_slide_two_bar": None,
+        "mu_star": None, "not_applicable": list(ARCH_ONLY_ANALYSES),
+        "stands": bool(ns.stands), "stands_at_friction": bool(lp.stands),
+    }
+
+
 def _series_row(arch_spec) -> dict:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_continuous import continuous_collapse

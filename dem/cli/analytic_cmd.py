@@ -1,26 +1,31 @@
-"""``archdem analytic``: limit analysis of one arch (continuous, discrete, LP, two-bar) or figures."""
+"""``archdem analytic``: limit analysis of one arch (continuous, discrete, LP, two-bar) or figures; of a
+drawing's blocks (``--geometry``), the static LP with its hinges and mu*."""
 from __future__ import annotations
 
 import argparse
 import math
 
-from analytic.limit.summary import analyse
+from analytic.limit.summary import ARCH_ONLY_ANALYSES, analyse, analyse_drawing
 from dem.common.options import (
     add_arch_arguments,
     arch_from_args,
     default_of,
+    density_text,
     discretisation_kwargs,
+    option_used,
     print_json,
     writable_dir,
 )
 from specimens.blocks import discretise
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
+from specimens.drawn import DrawnAssembly, gaps_text
 from specimens.errors import ArchdemInputError
 
 
 def register(sub) -> None:
-    p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar",
-                       description=__doc__.splitlines()[0])
+    p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar; "
+                                        "a drawing's static LP (--geometry)",
+                       description=" ".join(line.strip() for line in __doc__.split("\n\n")[0].splitlines()))
     add_arch_arguments(p)
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"),
                    help="discrete configuration")
@@ -63,11 +68,13 @@ def run(args: argparse.Namespace) -> int:
         else:
             for f in files:
                 print(f)
-        if args.id is None and all(getattr(args, k) is None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc")):
+        if args.id is None and all(getattr(args, k) is None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "geometry")):
             return 0
     label, arch = arch_from_args(args)
     mu_j = _finite_mu("--mu-joint", args.mu_joint, REFERENCE_MU_JOINT)
     mu_b = _finite_mu("--mu-base", args.mu_base, REFERENCE_MU_BASE)
+    if isinstance(arch, DrawnAssembly):
+        return _run_drawing(args, label, arch, mu_j, mu_b)
     if not (0.05 <= args.effective_thickness <= 1):
         raise ArchdemInputError(f"--effective-thickness must be in [0.05, 1], got {args.effective_thickness}")
     disc_kw = discretisation_kwargs(args, arch)
@@ -104,3 +111,67 @@ def run(args: argparse.Namespace) -> int:
         print(f"  warning: {w}")
     lam = res["lambda_continuous"]
     return 0 if lam is not None and math.isfinite(lam) else 1
+
+
+def _joint_text(h: dict) -> str:
+    """``J5 intrados (V1|V2)``: a joint of the LP's mechanism, what it does and the bodies it lies between."""
+    what = h["face"] + ("+sliding" if h.get("sliding") else "") if "face" in h else h["state"]
+    return f"{h['joint']} {what} ({'|'.join(h['between'])})"
+
+
+def _mechanism_text(res: dict, key: str) -> str:
+    hinges = ", ".join(_joint_text(h) for h in res[f"hinges_{key}"])
+    moving = ", ".join(_joint_text(m) for m in res.get(f"moving_{key}", []))
+    return f"hinges: {hinges or '-'}" + (f"; {moving}" if moving else "")
+
+
+def _run_drawing(args: argparse.Namespace, label: str, drawn: DrawnAssembly, mu_j: float, mu_b: float) -> int:
+    """``archdem analytic --geometry FILE``: the static LP of the drawn blocks, its hinges and mu*."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.experiments.friction_map.run import lp_mu_star
+
+    for dest in ("effective_thickness", "min_spacing"):
+        option_used(args, dest, False, "it belongs to the continuous ring of a two-centred arch, not to a drawing")
+    asm = discretise(drawn, **discretisation_kwargs(args, drawn))
+    res = analyse_drawing(asm, mu_j, mu_b)
+    if not res["stands"]:  # no equilibrium even without sliding: the drawing, not an analysis, is at fault
+        raise ArchdemInputError(asm.cannot_stand(label))
+    # mu* as the friction map defines it: the least joint friction at which the LP reaches its value
+    # with the joints not sliding (at the same base friction); none without joints between blocks
+    inner = any(not j.is_base for j in asm.joints)
+    res["mu_star_lp"] = lp_mu_star(asm, mu_b, res["lambda_no_joint_sliding"]) if inner else None
+    res = {"id": label, **{k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}}
+    if args.json:
+        print_json(res)
+        return 0
+    print(f"{label}  (drawing {asm.source.get('file', '')}: {res['n_blocks']} blocks, {res['n_joints']} joints, "
+          f"{'one chain' if res['chain'] else 'not one chain'}; contact {res['contact']:g}, mu_joint {mu_j:g}, "
+          f"mu_base {mu_b:g})")
+    print(f"  {density_text(asm)}: {res['total_mass_kg']:.4g} kg in all; masses and forces scale with it, "
+          "the multipliers do not")
+    if asm.gaps:
+        print(f"  gaps (no joint between them): {gaps_text(asm.gaps)}")
+    if res["stands_at_friction"]:
+        print(f"  LP (friction)    lambda = {_lam(res['lambda_lp'])}   {_mechanism_text(res, 'lp')}   "
+              f"[{res['lp_status']}]")
+    else:
+        print(f"  LP (friction)    the blocks cannot stand under self-weight at these frictions [{res['lp_status']}]")
+    print(f"  LP (no sliding)  lambda = {_lam(res['lambda_no_sliding'])}   {_mechanism_text(res, 'no_sliding')}")
+    ns, nsb = res["lambda_no_sliding"], res["lambda_no_joint_sliding"]
+    if nsb is not None and ns is not None and not math.isclose(ns, nsb, rel_tol=1e-9):
+        print(f"  LP (joints not sliding, base at mu_base {mu_b:g})  lambda = {_lam(nsb)}")
+    if res["chain"]:
+        hd = ", ".join(_joint_text(h) for h in res["hinges_discrete"])
+        print(f"  discrete         lambda = {_lam(res['lambda_discrete'])}   hinges: {hd}   (four-hinge enumeration)")
+    ms = res["mu_star_lp"]
+    if not inner:
+        print("  mu* (LP)         -   no joint between blocks (the base's friction is --mu-base)")
+    elif ms is None:
+        print("  mu* (LP)         -   the LP's collapse still slides at a joint between blocks at a friction of 10")
+    elif ms == 0:
+        print("  mu* (LP)         0   no joint between blocks slides in the LP's collapse, at any friction")
+    else:
+        print(f"  mu* (LP)         {ms:.3f}   below it a joint between blocks slides in the LP's collapse, above it "
+              "none does")
+    print(f"  not for a drawing (they need a two-centred arch's parameters): {'; '.join(ARCH_ONLY_ANALYSES)}")
+    return 0 if res["stands_at_friction"] else 1

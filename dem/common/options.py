@@ -16,6 +16,8 @@ from dem.core.engines import available_engines
 from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
+from specimens.constants import DRAWN_DENSITY
+from specimens.drawn import DRAWN_CONFIG, DrawnAssembly, gaps_text
 from specimens.errors import ArchdemInputError
 from specimens.exchange import UNITS, read_assembly
 from specimens.geometry import PointedArch
@@ -61,7 +63,10 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
     g.add_argument("--voussoirs", type=int, default=None,
                    help=f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})")
     g.add_argument("--density", type=float, default=None,
-                   help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g})")
+                   help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g}) "
+                        f"of the specimens' aerated concrete; a drawing's: the one its file states, else "
+                        f"{DRAWN_DENSITY:g}, masonry. Masses and forces scale with it; a uniform density changes no "
+                        "multiplier (LP, tilt lambda)")
     add_pier_arguments(p)
     add_geometry_arguments(p)
     p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
@@ -73,7 +78,7 @@ def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) ->
 
 def add_geometry_arguments(p: argparse.ArgumentParser) -> None:
     """``--geometry FILE --units U --depth D`` (see :func:`specimens.exchange.read_assembly`); ``--density``
-    is the arch's option."""
+    is the arch's option (read by :func:`geometry_from_args` where the command has it)."""
     g = p.add_argument_group("a structure from a drawing instead (docs/physics/geometry.md#16-assemblies-from-drawings)")
     g.add_argument("--geometry", default=None, metavar="FILE",
                    help="blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl (convex prisms)")
@@ -81,21 +86,40 @@ def add_geometry_arguments(p: argparse.ArgumentParser) -> None:
                    help=f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m); "
                         "with --record, the record's units if its file does not say (g, m/s2, cm/s2, mm/s2)")
     g.add_argument("--depth", type=float, default=None, metavar="D",
-                   help="out-of-plane depth of the drawn blocks [m] where the drawing does not state it")
+                   help="out-of-plane depth of the drawn blocks [m] where the drawing does not state it "
+                        "(archdem draw: optional, a plane drawing needs none)")
 
 
-def geometry_from_args(args: argparse.Namespace):
-    """``(label, DrawnAssembly)`` of ``--geometry`` (the arch and pier options refused beside it)."""
-    given = [f"--{k.replace('_', '-')}" for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs") + PIER_OPTIONS
-             if getattr(args, k, None) is not None]
-    if getattr(args, "id", None) is not None or given:
-        drop = "the specimen id" if getattr(args, "id", None) is not None else given[0]
+#: The depth [m] `archdem draw` gives blocks that state none (a plane drawing: masses per metre of depth).
+PLANE_DEPTH_M = 1.0
+
+
+def geometry_from_args(args: argparse.Namespace, plane: bool = False):
+    """``(label, DrawnAssembly)`` of ``--geometry`` (the arch and pier options refused beside it, and
+    ``--config``: a drawing's bodies are as drawn, so the command's configuration becomes
+    :data:`~specimens.drawn.DRAWN_CONFIG` in its output and file names). ``plane``: the command draws the
+    blocks in their plane, so a block without a depth takes :data:`PLANE_DEPTH_M`."""
+    given_arch = [f"--{k.replace('_', '-')}" for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs")
+                  + PIER_OPTIONS if getattr(args, k, None) is not None]
+    if getattr(args, "id", None) is not None or given_arch:
+        drop = "the specimen id" if getattr(args, "id", None) is not None else given_arch[0]
         raise ArchdemInputError(f"--geometry gives the whole structure: drop {drop}")
+    option_used(args, "config", False, "a drawing's blocks are as drawn, with no glued or free crown")
+    if hasattr(args, "config"):
+        args.config = DRAWN_CONFIG
     if args.depth is not None and not (math.isfinite(args.depth) and MIN_LENGTH_M <= args.depth <= MAX_LENGTH_M):
         raise ArchdemInputError(f"--depth must be a length between {MIN_LENGTH_M:g} and {MAX_LENGTH_M:g} m, got {args.depth:g}")
     units = args.units if args.units in UNITS else None  # otherwise a record's units (shake)
-    density = check_density(args.density) if getattr(args, "density", None) is not None else DEFAULT_DENSITY
-    return Path(args.geometry).stem, read_assembly(args.geometry, units=units, depth=args.depth, density=density)
+    density = check_density(args.density) if getattr(args, "density", None) is not None else None
+    depth = PLANE_DEPTH_M if plane and args.depth is None else args.depth
+    return Path(args.geometry).stem, read_assembly(args.geometry, units=units, depth=depth, density=density)
+
+
+def density_text(asm: DrawnAssembly) -> str:
+    """``density 2000 kg/m^3 (archdem's default for drawings)``: a drawing's density and where it came from."""
+    why = {"given": "--density", "file": "stated by the file"}.get(asm.source.get("density_from"),
+                                                                   "archdem's default for drawings; --density sets it")
+    return f"density {asm.density:g} kg/m^3 ({why})"
 
 
 def add_pier_arguments(p: argparse.ArgumentParser) -> None:
@@ -261,11 +285,21 @@ def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]
 
 def require_standing(label: str, arch, **kw: Any) -> None:
     """Refuse, in one line, an arch (``discretise`` keywords ``kw``) that cannot stand under its own
-    weight even without sliding: a test of its capacity would answer nothing."""
+    weight even without sliding: a test of its capacity would answer nothing. A drawing's refusal names
+    its gaps and the parts no joint joins; a drawing that stands with gaps says so on stderr."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_discrete import require_standing as _require_standing
+    from analytic.limit.limit_discrete import solve_lp
 
-    _require_standing(label, discretise(arch, **kw))
+    asm = discretise(arch, **kw)
+    if not isinstance(asm, DrawnAssembly):
+        _require_standing(label, asm)
+        return
+    if not solve_lp(asm, math.inf, math.inf).stands:
+        raise ArchdemInputError(asm.cannot_stand(label))
+    if asm.gaps:
+        print(f"archdem: warning: {label}: {gaps_text(asm.gaps)} (no joint between them; it stands without one)",
+              file=sys.stderr)
 
 
 #: Figure formats the commands write (matplotlib's, by the file's suffix).

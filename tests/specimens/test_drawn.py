@@ -7,6 +7,7 @@ import pytest
 
 from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 from specimens import ArchdemInputError, discretise
+from specimens.constants import DRAWN_DENSITY
 from specimens.drawn import DrawnBlock, assemble, convex_pieces, from_dict
 from specimens.exchange import EXAMPLE_DRAWING, read_assembly
 from specimens.imperfection import Imperfection, realise_drawn
@@ -30,8 +31,9 @@ def test_a_block_on_a_wider_one_touches_along_its_own_face():
     assert (inner[0].a, inner[0].b) == (0, 1) and inner[0].normal == pytest.approx([0, -1])  # from B (a) down to A (b)
     base = [j for j in asm.joints if j.is_base]
     assert len(base) == 1 and base[0].length == pytest.approx(1.0)  # the lowest edge is the ground
-    # masses of the prisms, depth 0.1 m, density 500 kg/m^3
-    assert asm.body("B").mass == pytest.approx(500 * 0.1 * 0.2 * 0.4) and asm.total_mass == pytest.approx(500 * 0.1 * 0.28)
+    # masses of the prisms, depth 0.1 m, a drawing's density
+    assert asm.body("B").mass == pytest.approx(DRAWN_DENSITY * 0.1 * 0.2 * 0.4)
+    assert asm.total_mass == pytest.approx(DRAWN_DENSITY * 0.1 * 0.28)
 
 
 def test_a_stack_rocks_as_one_block_and_a_tree_of_blocks_is_no_chain():
@@ -54,7 +56,7 @@ def test_a_non_convex_block_is_split_into_convex_pieces_with_the_outline_mass():
     assert sum(signed_area(p) for p in pieces) == pytest.approx(signed_area(ell), rel=1e-12)
     asm = assemble([block("L", ell)])
     b = asm.bodies[0]
-    assert b.mass == pytest.approx(500 * 0.1 * polygon_properties(ell).area) and len(b.pieces) == 2
+    assert b.mass == pytest.approx(DRAWN_DENSITY * 0.1 * polygon_properties(ell).area) and len(b.pieces) == 2
 
 
 def test_blocks_are_oriented_ccw_whatever_the_drawing():
@@ -89,7 +91,7 @@ def test_discretise_takes_a_drawn_assembly_as_drawn_with_its_contact():
     with pytest.raises(ArchdemInputError, match="the number of voussoirs does not apply"):
         discretise(asm, n_voussoirs=4)
     with pytest.raises(ArchdemInputError, match="give the density when reading"):
-        discretise(asm, density=2000.0)
+        discretise(asm, density=2400.0)
 
 
 @pytest.mark.parametrize("blocks, supports, message", [
@@ -139,3 +141,78 @@ def test_an_imperfect_realisation_of_a_drawing_loses_its_edges_joint_by_joint():
     assert solve_lp(one, math.inf, math.inf).lam < solve_lp(asm, math.inf, math.inf).lam
     with pytest.raises(ArchdemInputError, match="leaves less than"):
         realise_drawn(asm, Imperfection(0.2, 0.0), None)
+
+
+def ring(gap=0.0, n=8, ri=1.0, re=1.25):
+    """A semicircular ring of n voussoirs B1..Bn on the ground [m]; its right half moved ``gap`` to the right."""
+    out = []
+    for k in range(n):
+        a0, a1 = math.pi * (1 - k / n), math.pi * (1 - (k + 1) / n)
+        q = np.array([[ri * math.cos(a0), ri * math.sin(a0)], [ri * math.cos(a1), ri * math.sin(a1)],
+                      [re * math.cos(a1), re * math.sin(a1)], [re * math.cos(a0), re * math.sin(a0)]])
+        out.append(block(f"B{k + 1}", q + [gap if k >= n // 2 else 0.0, 0.0], depth=0.3))
+    return out
+
+
+def test_a_joint_drawn_open_is_a_gap_named_with_the_parts_it_leaves():
+    """5 mm between the crown voussoirs: each half stands on the ground, so the drawing is read, its gap
+    named; the LP has no equilibrium, and the refusal names the gap and the two halves no joint joins."""
+    asm = assemble(ring(0.005))
+    (g,) = asm.gaps
+    assert (g.a, g.b, g.kind) == ("B4", "B5", "block") and g.distance_m == pytest.approx(0.005, rel=1e-9)
+    assert g.describe() == "blocks B4 and B5 are 5.0 mm apart"
+    assert asm.parts() == [("B1", "B2", "B3", "B4"), ("B5", "B6", "B7", "B8")]
+    lp = solve_lp(asm, math.inf, math.inf)
+    assert not lp.stands and lp.status == 2
+    msg = asm.cannot_stand("ring")
+    assert msg == ("ring cannot stand under its own weight (no equilibrium even without sliding): blocks B4 and B5 "
+                   "are 5.0 mm apart (no joint between them); its blocks stand in 2 parts that no joint joins: "
+                   "B1, B2, B3, B4 | B5, B6, B7, B8")
+    # carried whole to a worker, and into the result files
+    assert from_dict(json.loads(json.dumps(asm.to_dict()))).gaps == asm.gaps
+    assert asm.parameters()["gaps"][0]["text"] == "blocks B4 and B5 are 5.0 mm apart"
+    closed = assemble(ring())
+    assert closed.gaps == () and len(closed.parts()) == 1 and solve_lp(closed, math.inf, math.inf).stands
+    assert "gaps" not in closed.to_dict() and "gaps" not in closed.parameters()
+
+
+@pytest.mark.parametrize("blocks, supports, message", [
+    # a block drawn 5 mm above the one it should rest on, on a support 5 mm below a block
+    ([block("bottom", rect(0, 0, 0.2, 0.4)), block("top", rect(0, 0.405, 0.2, 0.8))], (),
+     r"block top touches no other block and no support \(blocks bottom and top are 5.0 mm apart\)"),
+    ([block("A", rect(0, 0, 0.2, 0.4)), block("B", rect(0, 0.4, 0.2, 0.8))], [rect(-0.5, -0.2, 0.7, -0.005)],
+     r"no block stands on a support or on the ground \(block A is 5.0 mm from support 1\)"),
+    ([block("A", rect(0, 0, 1, 0.2)), block("B", rect(1.002, 0.2, 1.2, 0.4)), block("C", rect(1.002, 0.4, 1.2, 0.6))],
+     [rect(-0.5, -0.5, 1.0, 0.0)], r"blocks B, C touch each other but not the ground or a support "
+                                   r"\(blocks A and B are 2.0 mm apart\)"),
+])
+def test_a_gap_that_leaves_blocks_without_support_is_named_in_the_refusal(blocks, supports, message):
+    with pytest.raises(ArchdemInputError, match=message) as exc:
+        assemble(blocks, supports)
+    assert "\n" not in str(exc.value)
+
+
+def test_gaps_to_a_support_and_to_the_ground_line():
+    """A lintel on one pier and 3 mm above the other; a pier standing 4 mm short of the ground line."""
+    piers = [block("L", rect(0, 0, 0.2, 1)), block("R", rect(0.8, 0, 1, 0.997))]
+    on_one = assemble([*piers, block("T", rect(0, 1, 1, 1.2))])
+    assert [g.describe() for g in on_one.gaps] == ["blocks R and T are 3.0 mm apart"]
+    assert not solve_lp(on_one, math.inf, math.inf).stands  # the lintel overhangs its one pier by 0.8 m
+    short = assemble([block("L", rect(0, 0, 0.2, 1)), block("R", rect(0.2, 0.004, 0.4, 1))])
+    assert [(g.describe(), g.kind) for g in short.gaps] == [("block R is 4.0 mm above the ground", "ground")]
+    pad = assemble([block("A", rect(0, 0, 0.2, 0.4)), block("B", rect(0.2, 0.001, 0.4, 0.4))],
+                   supports=[rect(-0.5, -0.2, 0.7, 0.0)])
+    assert [(g.describe(), g.kind) for g in pad.gaps] == [("block B is 1.0 mm from support 1", "support")]
+
+
+def test_blocks_a_course_apart_or_with_a_shim_between_are_no_gap():
+    """A gap is measured against the thinner block, and only where nothing is drawn between: a tall wall of
+    thin courses, a corner contact and a 5 mm shim between two blocks are no gaps."""
+    wall = [block(f"W{r}-{c}", rect(c * 0.3, r * 0.05, (c + 1) * 0.3, (r + 1) * 0.05)) for r in range(200) for c in range(2)]
+    assert assemble(wall).gaps == ()
+    corner = assemble([block("A", rect(0, 0, 0.2, 0.2)), block("B", rect(0.2, 0, 0.4, 0.2)),
+                       block("C", rect(0.2, 0.2, 0.4, 0.4))])
+    assert corner.gaps == ()  # A and C touch at a corner only: no gap, no joint
+    shim = assemble([block("A", rect(0, 0, 0.3, 0.3)), block("S", rect(0, 0.3, 0.3, 0.305)),
+                     block("B", rect(0, 0.305, 0.3, 0.6))])
+    assert shim.gaps == () and len(shim.joints) == 3

@@ -11,6 +11,7 @@ from analytic.rocking.impact import energy_restitution
 from analytic.rocking.linkage import mechanism_four_bar
 from analytic.rocking.rocking_block import rocking_frame_equivalent
 from specimens import ArchdemInputError, Piers, discretise, get_specimen
+from specimens.constants import DRAWN_DENSITY
 from specimens.exchange import read_assembly, write_assembly
 from specimens.mesh import prism
 
@@ -80,7 +81,7 @@ def test_a_single_block_drawn_in_mm_rocks_at_b_over_h(tmp_path):
     p = _dxf(tmp_path / "block.dxf", [rect(0, 0, 200, 800)], units=4, layer="block depth 100", labels=[("B", (100, 400))])
     asm = read_assembly(p)
     b = asm.bodies[0]
-    assert b.name == "B" and b.width == pytest.approx(0.1) and b.mass == pytest.approx(500 * 0.2 * 0.8 * 0.1)
+    assert b.name == "B" and b.width == pytest.approx(0.1) and b.mass == pytest.approx(DRAWN_DENSITY * 0.2 * 0.8 * 0.1)
     assert [j.is_base for j in asm.joints] == [True] and asm.joints[0].length == pytest.approx(0.2)
     assert solve_lp(asm, math.inf, math.inf).lam == pytest.approx(0.25, rel=1e-9)
     assert solve_lp(asm, 0.2, 0.2).lam == pytest.approx(0.2, rel=1e-9)  # slides first when mu < b/h
@@ -115,14 +116,14 @@ def test_a_drawing_in_the_xz_plane_with_3d_polylines(tmp_path):
         msp.add_polyline3d([(x, 5.0, z) for x, z in q], close=True)
     doc.saveas(str(tmp_path / "xz.dxf"))
     asm = read_assembly(tmp_path / "xz.dxf", depth=0.1)
-    assert [b.name for b in asm.bodies] == ["B1", "B2"] and asm.total_mass == pytest.approx(500 * 0.1 * 0.16)
+    assert [b.name for b in asm.bodies] == ["B1", "B2"] and asm.total_mass == pytest.approx(DRAWN_DENSITY * 0.1 * 0.16)
     assert solve_lp(asm, math.inf, math.inf).lam == pytest.approx(0.25, rel=1e-9)
 
 
 def test_a_csv_in_mm_and_an_stl_of_the_same_blocks(tmp_path):
     (tmp_path / "w.csv").write_text("block,x,z\nA,0,0\nA,200,0\nA,200,400\nA,0,400\nB,0,400\nB,200,400\nB,200,800\nB,0,800\n")
     asm = read_assembly(tmp_path / "w.csv", units="mm", depth=0.1)
-    assert asm.total_mass == pytest.approx(500 * 0.1 * 0.16) and solve_lp(asm, math.inf, math.inf).lam == pytest.approx(0.25)
+    assert asm.total_mass == pytest.approx(DRAWN_DENSITY * 0.1 * 0.16) and solve_lp(asm, math.inf, math.inf).lam == pytest.approx(0.25)
     scene = trimesh.util.concatenate([prism(b.outline, 0.1) for b in asm.bodies])
     scene.export(tmp_path / "w.stl")
     stl = read_assembly(tmp_path / "w.stl")  # float32 vertices: the same blocks to single precision
@@ -133,7 +134,7 @@ def test_a_csv_in_mm_and_an_stl_of_the_same_blocks(tmp_path):
 def test_a_non_convex_block_read_from_a_drawing_is_split(tmp_path):
     ell = [[0, 0], [0.6, 0], [0.6, 0.2], [0.2, 0.2], [0.2, 0.6], [0, 0.6]]
     asm = read_assembly(_dxf(tmp_path / "l.dxf", [ell]), depth=0.1)
-    assert len(asm.bodies[0].pieces) == 2 and asm.total_mass == pytest.approx(500 * 0.1 * 0.2)
+    assert len(asm.bodies[0].pieces) == 2 and asm.total_mass == pytest.approx(DRAWN_DENSITY * 0.1 * 0.2)
 
 
 @pytest.mark.parametrize("name, content, message", [
@@ -170,3 +171,39 @@ def test_open_polylines_and_arcs_are_refused_in_one_line(tmp_path):
         read_assembly(tmp_path / "missing.dxf")
     with pytest.raises(ArchdemInputError, match="no closed polylines"):
         read_assembly(_dxf(tmp_path / "empty.dxf", []))
+
+
+def test_a_drawing_states_its_density_or_takes_masonry_s(tmp_path):
+    """No density in the file: masonry's (DRAWN_DENSITY), said in the source; the file's archdem:density, or the
+    one given, otherwise. A uniform density scales the masses and changes no multiplier."""
+    p = _dxf(tmp_path / "block.dxf", [rect(0, 0, 200, 800)], units=4, layer="block depth 100")
+    asm = read_assembly(p)
+    assert (asm.density, asm.source["density_from"]) == (DRAWN_DENSITY, "default") != (500.0, "default")
+    assert asm.total_mass == pytest.approx(DRAWN_DENSITY * 0.2 * 0.8 * 0.1)
+    given = read_assembly(p, density=2400.0)
+    assert (given.density, given.source["density_from"]) == (2400.0, "given")
+    assert given.total_mass == pytest.approx(asm.total_mass * 2400 / DRAWN_DENSITY)
+    assert solve_lp(given, 0.3, 1.0).lam == solve_lp(asm, 0.3, 1.0).lam
+
+    def stated(doc_path):
+        doc = ezdxf.readfile(str(doc_path))
+        doc.header.custom_vars.append("archdem:density", "1800")
+        doc.saveas(str(tmp_path / "stated.dxf"))
+        return tmp_path / "stated.dxf"
+
+    s = read_assembly(stated(p))
+    assert (s.density, s.source["density_from"]) == (1800.0, "file")
+    assert read_assembly(stated(p), density=2400.0).density == 2400.0  # the option overrides the file
+    (tmp_path / "w.csv").write_text("# archdem: density=2200\nblock,x,z\nA,0,0\nA,0.2,0\nA,0.2,0.4\nA,0,0.4\n")
+    assert read_assembly(tmp_path / "w.csv", depth=0.1).density == 2200.0
+    (tmp_path / "bad.csv").write_text("# archdem: density=-1\nblock,x,z\nA,0,0\nA,0.2,0\nA,0.2,0.4\nA,0,0.4\n")
+    with pytest.raises(ArchdemInputError, match="archdem:density must be a positive number"):
+        read_assembly(tmp_path / "bad.csv", depth=0.1)
+
+
+@pytest.mark.parametrize("suffix", [".dxf", ".csv", ".obj"])
+def test_archdem_writes_the_density_so_a_catalogue_arch_keeps_its_masses(tmp_path, suffix):
+    asm = discretise(ARCH)
+    back = read_assembly(write_assembly(asm, tmp_path / f"a{suffix}"))
+    assert (back.density, back.source["density_from"]) == (asm.density, "file") == (500.0, "file")
+    assert [b.mass for b in back.bodies] == [b.mass for b in asm.bodies]

@@ -215,8 +215,6 @@ class PyBulletEngine(Engine):
         f_block = math.sqrt(settings.mu_joint)
         f_base = settings.mu_base / f_block
         n_files = [0]
-        # compliant joints feel micrometres: their faces unoffset, on exact pads (docs/engines.md#10-compliant-joints)
-        compliant = settings.contact_law == "compliant"
         inflate = hull_offset(settings)
 
         def shape(polys, width, R, c, z_off):
@@ -269,12 +267,11 @@ class PyBulletEngine(Engine):
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
-        relieved = is_relieved(model) or compliant
         for k, b in enumerate(model.bodies):
             R, I, q = principal_frame(b.inertia)  # machine-independent (dem.core.engines.inputs)
             c = on_grid(b.centroid)
             mass = significant(b.mass)
-            s = shape(relief_pieces(model, k) if relieved else b.pieces, b.width, R, c, float(c[2]))
+            s = shape(relief_pieces(model, k), b.width, R, c, float(c[2]))
             bid = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
                                     baseOrientation=q)
             p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],

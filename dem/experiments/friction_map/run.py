@@ -57,10 +57,10 @@ from dem.experiments.tilt.case import (
     DEM_CASE,
     MAP_PROTOCOL,
     MAP_TILT_TOL,
-    RC_REF,
     make_case,
     scaled_protocol,
 )
+from dem.experiments.tilt.run import RC_REF
 from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import REFERENCE_MU_BASE

@@ -18,14 +18,13 @@ import numpy as np
 from dem.core import detect
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
-from dem.experiments.tilt.run import TiltProtocol, TiltResult, hold_level, tilt
+from dem.experiments.tilt.run import TiltProtocol, TiltResult, hold_level, tilt, time_scale_of
 from specimens.blocks import check_contact, discretise
 from specimens.drawn import DrawnAssembly, from_dict
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 
-RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
 MAP_TILT_TOL = 0.02  # relative lambda bracket of each map tilt (default protocol of the map)
 # A map tilt reads the mode of the collapsing level of a 2 % bracket started at the LP; a bracket as
 # narrow as the tilt test's moved that level nearer the threshold and mu* with it
@@ -46,16 +45,6 @@ def arch_from_params(p: dict) -> PointedArch:
     return PointedArch(e=p["e"], t=p["t"], Rp=p["Rp"], width=p["width"])
 
 
-def time_scale_of(arch: PointedArch, time_scale: float | str = "auto") -> float:
-    """Protocol time scale: ``max(1, sqrt(Rc / RC_REF))`` for ``"auto"``, else the number given."""
-    if time_scale == "auto":
-        return max(1.0, math.sqrt(arch.Rc / RC_REF))
-    s = float(time_scale)
-    if not (math.isfinite(s) and s > 0):
-        raise ArchdemInputError(f"time scale must be 'auto' or a positive number, got {time_scale!r}")
-    return s
-
-
 def _jsonable(v):
     return list(v) if isinstance(v, tuple) else v
 
@@ -73,7 +62,7 @@ def make_case(label: str, arch: PointedArch | DrawnAssembly, config: str, mu_joi
     (:class:`~specimens.drawn.DrawnAssembly`): the case then holds them whole (``drawn``), runs the
     protocol at its own scale and has no configuration, voussoirs or piers of its own.
     """
-    if config not in ("glued", "free"):
+    if config not in ("glued", "free") and not (isinstance(arch, DrawnAssembly) and config == arch.config):
         raise ArchdemInputError(f"configuration must be 'glued' or 'free', got {config!r}")
     for nm, v in (("mu_joint", mu_joint), ("mu_base", mu_base)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
@@ -91,7 +80,7 @@ def make_case(label: str, arch: PointedArch | DrawnAssembly, config: str, mu_joi
         "protocol": {**{k: _jsonable(getattr(default, k)) for k in CASE_PROTOCOL_FIELDS},
                      **(protocol if protocol is not None else MAP_PROTOCOL)},
         "settings": dict(settings or {}),
-        "time_scale": 1.0 if drawn else time_scale_of(arch, time_scale),
+        "time_scale": time_scale_of(arch, time_scale),
         **({} if check_contact(contact) == 1.0 else {"contact": float(contact)}),
         **({} if piers is None else {"piers": piers.describe()}),
     }
@@ -102,7 +91,7 @@ def scaled_protocol(d: dict, s: float):
     unknown = set(d) - names
     if unknown:
         raise ArchdemInputError(f"unknown tilt protocol fields: {sorted(unknown)}")
-    return TiltProtocol(**d).slowed(s)
+    return TiltProtocol(**{**d, "time_scale": s}).slowed(s)  # the scale recorded: tilt() does not apply it again
 
 
 def scaled_settings(case: dict):

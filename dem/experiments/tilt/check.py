@@ -15,6 +15,9 @@ from typing import Iterable
 from specimens.constants import NO_SLIDING_MU
 
 HINGE_STATES = ("hinge", "hinge+slide")
+#: A tilt further than this from the LP of its own blocks warns: the tolerance the tilt is validated to
+#: on the catalogue and on arches outside it (docs/validation.md#4-no-sliding-tilt-against-the-lp, #20).
+LP_TOLERANCE = 0.03
 
 
 @dataclass(frozen=True)
@@ -96,3 +99,87 @@ def check_result(result, assembly, lp=None) -> TiltCheck:
     st = result.settings
     return check(result.label, assembly, st.engine, st.mu_joint, st.mu_base, result.lam, result.mode,
                  ((j.joint, j.state, j.face) for j in result.joints), result.n_sims, result.wall_s, lp)
+
+
+@dataclass(frozen=True)
+class LpCheck:
+    """A tilt's ``lam`` beside the static LP of the same blocks (same joints, same effective contact,
+    same frictions; infinite friction when both prevent sliding): the check every tilt carries.
+
+    ``lp_slides``: the LP's mechanism slides at some joint (the associative LP is then no bound);
+    ``law``: the joints' contact law (the rigid-block LP is no bound for compliant joints either)."""
+
+    label: str
+    lam: float
+    lp_lam: float
+    lp_hinges: tuple[tuple[str, str], ...]
+    lp_slides: bool
+    no_sliding: bool
+    law: str = "rigid"
+    dem_hinges: tuple[tuple[str, str], ...] = ()
+    tolerance: float = LP_TOLERANCE
+
+    @property
+    def rel_err(self) -> float:
+        """(lambda - lambda_LP) / lambda_LP; NaN without an LP."""
+        if not (math.isfinite(self.lp_lam) and self.lp_lam > 0 and math.isfinite(self.lam)):
+            return float("nan")
+        return (self.lam - self.lp_lam) / self.lp_lam
+
+    @property
+    def agrees(self) -> bool | None:
+        """Within :attr:`tolerance` of the LP; None without an LP to compare with."""
+        e = self.rel_err
+        return None if math.isnan(e) else abs(e) <= self.tolerance
+
+    @property
+    def cause(self) -> str:
+        """The likely cause of a departure (empty when the two agree)."""
+        if self.agrees is not False:
+            return ""
+        if self.law != "rigid":
+            return "compliant joints deform before they hinge, which the rigid-block LP leaves out"
+        if self.rel_err < 0 and self.lp_slides:
+            return ("the LP's mechanism slides, and the associative LP overestimates a sliding collapse "
+                    "(no bound with Coulomb friction)")
+        other = "" if not self.dem_hinges or self.dem_hinges == self.lp_hinges else (
+            f"; the DEM hinges ({_hinge_text(self.dem_hinges)}) are not the LP's ({_hinge_text(self.lp_hinges)})")
+        if self.rel_err < 0:
+            return ("the engine tipped early: near the least thickness the collapse is sensitive to the contact "
+                    "geometry and the solver's settling; rerun with --engine mujoco or a smaller --dt" + other)
+        return ("the engine held above the exact limit: a slow mechanism not detected within the hold; rerun with "
+                "--full-hold or --engine mujoco" + other)
+
+    @property
+    def warning(self) -> str:
+        """One line naming the arch, both values and the likely cause; empty when they agree."""
+        if self.agrees is not False:
+            return ""
+        return (f"{self.label}: tilt lambda {self.lam:.4f} is {abs(100 * self.rel_err):.1f} % "
+                f"{'below' if self.rel_err < 0 else 'above'} the LP of the same blocks ({self.lp_lam:.4f}); "
+                f"likely cause: {self.cause}")
+
+    def to_dict(self) -> dict:
+        """The JSON of the check (``lp_lambda``, ``error_pct``, ``agrees``, ``warning``, ...)."""
+        e = self.rel_err
+        return {"lp_lambda": self.lp_lam, "error_pct": None if math.isnan(e) else 100 * e, "agrees": self.agrees,
+                "tolerance_pct": 100 * self.tolerance, "lp_hinges": [list(h) for h in self.lp_hinges],
+                "lp_slides": self.lp_slides, "lp_friction": "none (no sliding)" if self.no_sliding else "same as the tilt",
+                "warning": self.warning}
+
+
+def _hinge_text(hinges) -> str:
+    return " ".join(f"{j} {f}" for j, f in hinges)
+
+
+def lp_check(result, assembly, lp=None) -> LpCheck | None:
+    """The check of a :class:`dem.experiments.tilt.run.TiltResult` of ``assembly`` against :func:`reference_lp`
+    (``lp`` if already solved); None without blocks to solve (a model built without an assembly)."""
+    if assembly is None:
+        return None
+    st = result.settings
+    lp = reference_lp(assembly, st.mu_joint, st.mu_base) if lp is None else lp
+    slides = any("sliding" in str(v) for v in lp.joint_states.values())
+    dem = tuple((j.joint, j.face) for j in result.joints if j.state in HINGE_STATES)
+    return LpCheck(str(result.label), float(result.lam), float(lp.lam), tuple(tuple(h) for h in lp.hinges), bool(slides),
+                   prevents_sliding(st.mu_joint, st.mu_base), st.contact_law, dem)

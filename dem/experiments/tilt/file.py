@@ -2,7 +2,8 @@
 
 Layout: root attributes ``format``, ``label``, scalar outcome (``lambda``, ``theta_deg``,
 ``mode``, ``n_sims``, ``wall_s``, ``bracket``) and JSON attributes ``settings``, ``protocol``,
-``criterion``, ``versions``, ``joints``, ``levels``, ``summary``; group ``model`` (bodies with
+``criterion``, ``versions``, ``joints``, ``levels``, ``summary``, ``lp_check`` (the answer beside the LP
+of the same blocks, with its warning); group ``model`` (bodies with
 their convex pieces, mass, centroid, inertia, outline; joints; base; source parameters);
 groups ``collapse`` and ``stable`` (the two simulations behind the bracket: load, outcome and
 the time histories ``t``, ``pos``, ``quat``, ``gravity``, ``dmax``, ``ke``, ``fpower``).
@@ -18,6 +19,7 @@ import numpy as np
 from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
 from dem.core.detect import JointState
 from dem.core.settings import Settings
+from dem.experiments.tilt.check import HINGE_STATES, LpCheck
 from dem.experiments.tilt.run import TiltProtocol, TiltResult
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path, to_json
@@ -39,6 +41,7 @@ def save_result(result: TiltResult, path: str | Path) -> Path:
                 "protocol": to_json(result.protocol.__dict__), "criterion": to_json(result.criterion),
                 "versions": to_json(result.versions), "joints": to_json([j.to_dict() for j in result.joints]),
                 "levels": to_json(result.levels), "summary": to_json(result.summary()),
+                "lp_check": to_json(result.lp_check.to_dict() if result.lp_check is not None else None),
             })
             write_model(f.create_group("model"), result.model)
             for name in ("collapse", "stable"):
@@ -55,7 +58,7 @@ def load_result(path: str | Path) -> TiltResult:
             raise ArchdemInputError(f"{path} is not an archdem tilt result")
         model = read_model(f["model"])
         sims = {n: (read_sim(f[n]) if n in f else None) for n in ("collapse", "stable")}
-        return TiltResult(
+        res = TiltResult(
             str(f.attrs["label"]), model, Settings.from_dict(json.loads(f.attrs["settings"])),
             # a result written before the rest rule held every level its full hold_time, and one
             # written before guess_bracket started from FORMER_GUESS_BRACKET x the guess, before
@@ -67,3 +70,10 @@ def load_result(path: str | Path) -> TiltResult:
             str(f.attrs["mode"]), [JointState(**d) for d in json.loads(f.attrs["joints"])],
             [tuple(x) for x in json.loads(f.attrs["levels"])], sims["collapse"], sims["stable"],
             json.loads(f.attrs["criterion"]), json.loads(f.attrs["versions"]), str(path))
+        chk = json.loads(f.attrs["lp_check"]) if "lp_check" in f.attrs else None  # none in files before the check
+    if chk:
+        res.lp_check = LpCheck(res.label, res.lam, float(chk["lp_lambda"]), tuple(tuple(h) for h in chk["lp_hinges"]),
+                               bool(chk["lp_slides"]), chk["lp_friction"].startswith("none"), res.settings.contact_law,
+                               tuple((j.joint, j.face) for j in res.joints if j.state in HINGE_STATES),
+                               float(chk["tolerance_pct"]) / 100)
+    return res

@@ -35,7 +35,10 @@ from dem.core.loads import TiltHold, TiltRamp, TiltStairs
 from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
+from dem.experiments.tilt.check import LpCheck, lp_check, prevents_sliding
+from specimens.drawn import DrawnAssembly
 from specimens.errors import ArchdemInputError
+from specimens.geometry import PointedArch
 
 # First bracket of the hold protocol, relative to its first estimate: the widest that reaches the
 # 0.5 % tolerance in 3 bisections (docs/decisions/002-guess-bracket.md)
@@ -44,6 +47,30 @@ GUESS_STEPS = (1.05, 0.95)  # an end of the first bracket that turns out wrong m
 # an end of the first bracket is simulated only if the bisection ends on it: 3 simulations per test
 # instead of 5, the same answers (docs/decisions/003-probe-ends.md)
 PROBE_ENDS = "last"
+RC_REF = 0.200  # m, Rc of every catalogue specimen: the scale at which the protocol defaults hold
+# m, the largest length scale of the catalogue (Sh1's Rp), which its drawings carry: a drawing's counterpart of RC_REF
+LENGTH_REF = 0.400
+
+
+def time_scale_of(target, time_scale: float | str = "auto") -> float:
+    """Time scale of the tilt protocol and the time step: for ``"auto"``, ``max(1, sqrt(L / L_ref))``
+    with the arch's Rc against :data:`RC_REF` (a :class:`~specimens.geometry.PointedArch` or blocks
+    cut from one) or a drawing's length scale against :data:`LENGTH_REF`; 1 for a model without
+    blocks (docs/physics/dem.md#7-tilt-test-hold-and-bisect: similar arches run the same
+    dimensionless test); else the number given."""
+    if time_scale != "auto":
+        s = float(time_scale)
+        if not (math.isfinite(s) and s > 0):
+            raise ArchdemInputError(f"time scale must be 'auto' or a positive number, got {time_scale!r}")
+        return s
+    if isinstance(target, Model):
+        target = target.assembly
+    if target is None:
+        return 1.0
+    if isinstance(target, DrawnAssembly):
+        return max(1.0, math.sqrt(float(target.length_scale) / LENGTH_REF))
+    arch = target if isinstance(target, PointedArch) else target.arch
+    return max(1.0, math.sqrt(arch.Rc / RC_REF))
 
 
 @dataclass(frozen=True)
@@ -73,6 +100,9 @@ class TiltProtocol:
 
     guess: float | None = None  # hold: first estimate of lambda; None: found as ``start`` says
     start: str = "auto"  # hold: "scan" (a ramp at scan_rate), "lp" (lp_guess), "auto" (lp when the blocks are known)
+    # the durations above (and the time step) are those of the catalogue's scale; a larger arch runs them
+    # x its time_scale_of (None: found from the arch by tilt(); a number: already applied)
+    time_scale: float | None = None
 
     def __post_init__(self) -> None:
         if self.kind not in ("hold", "staircase", "ramp"):
@@ -88,6 +118,9 @@ class TiltProtocol:
             raise ArchdemInputError(f"tilt protocol guess must be in (0, lam_max), got {self.guess!r}")
         if self.start not in ("auto", "scan", "lp"):
             raise ArchdemInputError(f"tilt protocol start must be auto, scan or lp, got {self.start!r}")
+        if self.time_scale is not None and not (isinstance(self.time_scale, (int, float)) and math.isfinite(self.time_scale)
+                                                and self.time_scale > 0):
+            raise ArchdemInputError(f"tilt protocol time_scale must be a positive number or None, got {self.time_scale!r}")
         if self.probe_ends not in ("first", "last"):
             raise ArchdemInputError(f"tilt protocol probe_ends must be first or last, got {self.probe_ends!r}")
         try:  # a list read back from JSON becomes the tuple
@@ -127,6 +160,7 @@ class TiltResult:
     criterion: dict
     versions: dict = field(default_factory=dict)
     result_file: str = ""
+    lp_check: LpCheck | None = None  # the answer beside the LP of the same blocks (dem.experiments.tilt.check)
 
     @property
     def theta_deg(self) -> float:
@@ -147,20 +181,40 @@ class TiltResult:
             "mu_joint": self.settings.mu_joint, "mu_base": self.settings.mu_base, "planar": self.settings.planar,
             "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
             "out_of_plane": self.out_of_plane, "result_file": self.result_file,
+            "lp_check": self.lp_check.to_dict() if self.lp_check is not None else None,
         }
+
+
+def _static_lp(assembly, settings: Settings):
+    """The static LP of ``assembly`` at the settings' frictions, or None if it cannot be solved."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.limit_discrete import solve_lp
+
+    try:
+        return solve_lp(assembly, settings.mu_joint, settings.mu_base)
+    except Exception:  # no admissible LP (e.g. degenerate geometry): fall back to the ramp scan
+        return None
+
+
+def _guess_of(lp) -> float | None:
+    lam = float(lp.lam) if lp is not None else math.nan
+    return lam if math.isfinite(lam) and lam > 0 else None
 
 
 def lp_guess(assembly, settings: Settings) -> float | None:
     """First estimate of the tilt lambda of ``assembly`` (a :mod:`specimens.blocks` assembly):
     the static LP of the same blocks at the settings' frictions, or None if it has none."""
-    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit.limit_discrete import solve_lp
+    return _guess_of(_static_lp(assembly, settings))
 
-    try:
-        lam = float(solve_lp(assembly, settings.mu_joint, settings.mu_base).lam)
-    except Exception:  # no admissible LP (e.g. degenerate geometry): fall back to the ramp scan
-        return None
-    return lam if math.isfinite(lam) and lam > 0 else None
+
+def scaled(proto: TiltProtocol, settings: Settings, s: float) -> tuple[TiltProtocol, Settings]:
+    """``proto`` run ``s`` times slower and ``settings`` recorded ``s`` times less often: an arch ``s^2``
+    times larger runs the same dimensionless test. The time step stays: PyBullet's contacts are not
+    similar under a larger step (a 4 m ring at 3.3 x 0.5 ms collapsed 3 % below its LP)."""
+    if s != 1.0:
+        settings = settings.with_(record_every=settings.record_every * s)
+        proto = proto.slowed(s)
+    return replace(proto, time_scale=float(s)), settings
 
 
 def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float) -> SimResult:
@@ -175,24 +229,29 @@ def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float
 
 def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None = None,
          label: str | None = None, assembly=None, config: str = "glued",
-         on_level: Callable[[float, SimResult], None] | None = None) -> TiltResult:
+         on_level: Callable[[float, SimResult], None] | None = None, check: bool = True) -> TiltResult:
     """Tilt test of ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model: see
     :func:`dem.core.model.as_model`, which cuts an arch in the ``config`` configuration); see the
     module docstring. ``assembly``: the blocks the model was built from (default: the model's own),
     needed by a hold protocol with ``start="lp"`` and used by ``start="auto"`` (the default; the
     ramp scan without it). The result's ``protocol`` holds the resolved start and, with the LP
-    start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold)."""
+    start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold).
+    ``check``: set the answer beside the LP of the same blocks (``lp_check``, with its warning)."""
     model = as_model(target, config=config)
     assembly = model.assembly if assembly is None else assembly
     settings = settings or Settings()
     proto = protocol or TiltProtocol()
     wall0 = time.perf_counter()
+    if proto.time_scale is None:
+        proto, settings = scaled(proto, settings, time_scale_of(assembly if assembly is not None else model))
     if proto.start == "auto":
         proto = replace(proto, start="lp" if assembly is not None else "scan")
+    lp = None
     if proto.kind == "hold" and proto.guess is None and proto.start == "lp":
         if assembly is None:
             raise ValueError("a tilt protocol with start='lp' needs the assembly of the model")
-        proto = replace(proto, guess=lp_guess(assembly, settings))  # None (no LP): the ramp scan
+        lp = _static_lp(assembly, settings)
+        proto = replace(proto, guess=_guess_of(lp))  # None (no LP): the ramp scan
     levels: list[tuple[float, bool]] = []
     collapse = stable = None
     if proto.kind == "hold":
@@ -257,7 +316,12 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 
-    return TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
-                      n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
-                      collapse.joints if collapse else [], levels, collapse, stable,
-                      detect.criterion(settings, model), run_provenance(settings.engine))
+    res = TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
+                     n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
+                     collapse.joints if collapse else [], levels, collapse, stable,
+                     detect.criterion(settings, model), run_provenance(settings.engine))
+    if check and assembly is not None:
+        # the guess's LP is the reference unless both frictions prevent sliding (then the LP without friction)
+        same = lp is not None and not prevents_sliding(settings.mu_joint, settings.mu_base)
+        res.lp_check = lp_check(res, assembly, lp if same else None)
+    return res

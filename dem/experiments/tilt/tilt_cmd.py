@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 
 from dem.common.joints import ensemble_imperfection
 from dem.common.options import (
@@ -75,7 +76,21 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{label} ({args.config}, mu {args.mu_joint:g}/{args.mu_base:g}, {args.protocol}): "
               f"lambda = {res.lam:.4f} (theta = {res.theta_deg:.2f} deg), bracket [{res.bracket[0]:.4f}, "
               f"{res.bracket[1]:.4f}], {res.mode} [{hinges}], {res.n_sims} simulations, {res.wall_s:.1f} s -> {path}")
+        print(lp_check_line(res.lp_check))
+    if res.lp_check is not None and res.lp_check.warning:
+        print(f"archdem: warning: {res.lp_check.warning}", file=sys.stderr)
     return 0
+
+
+def lp_check_line(chk) -> str:
+    """The tilt's own check, as printed under its answer."""
+    if chk is None:
+        return "  limit analysis: none for this model (no blocks to solve)"
+    if chk.agrees is None:
+        return f"  limit analysis of the same blocks: no multiplier (lambda = {chk.lp_lam:g}); the tilt is unchecked"
+    return (f"  limit analysis of the same blocks{' (no sliding)' if chk.no_sliding else ''}: lambda = {chk.lp_lam:.4f}; "
+            f"the tilt is {100 * chk.rel_err:+.1f} % from it "
+            f"({'within' if chk.agrees else 'beyond'} {100 * chk.tolerance:g} %)")
 
 
 def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:

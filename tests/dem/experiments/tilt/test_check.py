@@ -91,3 +91,35 @@ def test_halving_the_hold_ramp_rate(case):
     slow = tilt(m, Settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU),
                 TiltProtocol().slowed(2.0), assembly=asm)
     assert abs(slow.lam - ns.lam) / ns.lam < 0.02
+
+
+# ------------------------------------------------------------------ every tilt's own check (LpCheck)
+def _chk(lam, lp=0.5, **kw):
+    from dem.experiments.tilt.check import LpCheck
+
+    base = {"label": "arch", "lam": lam, "lp_lam": lp, "lp_hinges": (("L0", "intrados"),), "lp_slides": False,
+            "no_sliding": False}
+    return LpCheck(**(base | kw))
+
+
+def test_lp_check_agrees_within_3pct_and_says_nothing():
+    c = _chk(0.49)
+    assert c.agrees and c.rel_err == pytest.approx(-0.02) and c.warning == "" and c.cause == ""
+    assert c.to_dict()["error_pct"] == pytest.approx(-2.0) and c.to_dict()["agrees"] is True
+
+
+def test_lp_check_names_the_arch_both_values_and_the_likely_cause():
+    low = _chk(0.45)
+    assert low.agrees is False
+    assert low.warning.startswith("arch: tilt lambda 0.4500 is 10.0 % below the LP of the same blocks (0.5000)")
+    assert "tipped early" in low.cause
+    assert "held above" in _chk(0.55).cause and "above the LP" in _chk(0.55).warning
+    assert "associative LP overestimates" in _chk(0.45, lp_slides=True).cause
+    assert "compliant joints" in _chk(0.45, law="compliant").cause
+    other = _chk(0.45, dem_hinges=(("L1", "extrados"),))
+    assert "the DEM hinges (L1 extrados) are not the LP's (L0 intrados)" in other.cause
+
+
+def test_lp_check_without_an_lp_is_unchecked():
+    c = _chk(0.45, lp=float("nan"))
+    assert c.agrees is None and c.warning == "" and c.to_dict()["error_pct"] is None

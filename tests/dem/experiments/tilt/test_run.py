@@ -282,3 +282,45 @@ def test_on_level_hook_sees_every_held_level(monkeypatch):
     seen = []
     r = tilt(single_block(0.1, 0.4), Settings(), TiltProtocol(guess=0.25), on_level=lambda lam, sim: seen.append((lam, sim.collapsed)))
     assert seen == r.levels and r.bracket[0] <= 0.25 < r.bracket[1]
+
+
+def test_time_scale_of_larger_arches_only():
+    # similar arches run the same dimensionless test: times x sqrt(L / L_ref), never below 1
+    import math
+
+    from dem.core.model import single_block
+    from dem.experiments.tilt.run import LENGTH_REF, RC_REF, scaled, time_scale_of
+    from specimens.errors import ArchdemInputError
+    from specimens.catalogue import SPECIMEN_IDS, get_specimen
+    from specimens.geometry import PointedArch
+
+    assert all(time_scale_of(get_specimen(s).arch) == 1.0 for s in SPECIMEN_IDS)
+    big = PointedArch.from_radii(5.0, 5.8, 0.0)
+    assert time_scale_of(big) == pytest.approx(math.sqrt(big.Rc / RC_REF))
+    assert time_scale_of(single_block(0.2, 0.8)) == 1.0
+    assert time_scale_of(big, 2.0) == 2.0
+    with pytest.raises(ArchdemInputError):
+        time_scale_of(big, -1)
+    p, s = scaled(TiltProtocol(), Settings(), 3.0)
+    assert p.time_scale == 3.0 and p.hold_time == pytest.approx(3.0) and p.ramp_time == pytest.approx(1.5)
+    # the step stays (PyBullet's contacts are not similar under a larger one); records follow the protocol
+    assert s.dt == Settings().dt and s.record_every == pytest.approx(3 * Settings().record_every)
+    assert LENGTH_REF == pytest.approx(max(get_specimen(i).arch.Rp for i in SPECIMEN_IDS))
+
+
+def test_time_scale_of_a_drawing_from_its_length_scale(tmp_path):
+    import math
+
+    from dem.experiments.tilt.run import LENGTH_REF, time_scale_of
+    from specimens.arch_set import set_arch
+    from specimens.catalogue import get_specimen
+    from specimens.exchange import read_assembly, write_assembly
+
+    asm = set_arch("drawn-ring-csv").assembly(tmp_path)
+    assert time_scale_of(asm) == pytest.approx(math.sqrt(asm.length_scale / LENGTH_REF)) and time_scale_of(asm) > 1
+    # a catalogue arch drawn and read back keeps its scale (the drawing carries its length scale)
+    from specimens.blocks import discretise
+
+    sh1 = discretise(get_specimen("Sh1-Sd025").arch, config="free")
+    back = read_assembly(write_assembly(sh1, tmp_path / "sh1.csv"))
+    assert time_scale_of(back) == time_scale_of(sh1) == 1.0
