@@ -53,7 +53,7 @@ def read_model(g: h5py.Group) -> Model:
 def write_sim(g: h5py.Group, s: SimResult) -> None:
     g.attrs.update(load=to_json(s.load), duration=s.duration, collapsed=s.collapsed, t_collapse=s.t_collapse,
                    mode=s.mode, joints=to_json([j.to_dict() for j in s.joints]), out_of_plane=to_json(s.out_of_plane),
-                   wall_s=s.wall_s, steps=s.steps, t_rest=s.t_rest,
+                   wall_s=s.wall_s, steps=s.steps, t_rest=s.t_rest, t_exceed=s.t_exceed, t_confirm=s.t_confirm,
                    friction_work=s.history.friction_work)
     h = s.history
     for k in ("t", "pos", "quat", "gravity", "dmax", "ke", "fpower"):
@@ -65,4 +65,7 @@ def read_sim(g: h5py.Group) -> SimResult:
     joints = [JointState(**d) for d in json.loads(g.attrs["joints"])]
     return SimResult(json.loads(g.attrs["load"]), float(g.attrs["duration"]), h, bool(g.attrs["collapsed"]),
                      float(g.attrs["t_collapse"]), joints, str(g.attrs["mode"]), json.loads(g.attrs["out_of_plane"]),
-                     float(g.attrs["wall_s"]), int(g.attrs["steps"]), float(g.attrs.get("t_rest", float("nan"))))
+                     float(g.attrs["wall_s"]), int(g.attrs["steps"]), float(g.attrs.get("t_rest", float("nan"))),
+                     # files before the confirmed collapse (docs/decisions/012): the criterion's firing was the collapse
+                     float(g.attrs.get("t_exceed", g.attrs["t_collapse"])),
+                     float(g.attrs.get("t_confirm", g.attrs["t_collapse"])))

@@ -2,8 +2,11 @@
 
 Collapse criterion (no per-specimen tuning): some material point of some body has moved more
 than ``collapse_fraction x size`` (size = ring thickness of an arch, height of a block) from its
-initial position while that body still moves faster than ``collapse_speed``. Both parameters
-live in :class:`dem.core.settings.Settings` and are stored with every result.
+initial position while that body still moves faster than ``collapse_speed``. With
+``collapse_confirm`` (the shakes') a firing is only an excursion: the collapse is confirmed once a
+point moved more than ``collapse_confirm x size``, or when the run ends still past the criterion;
+an arch that comes back below it has survived (:func:`dem.core.simulate.simulate`). The
+parameters live in :class:`dem.core.settings.Settings` and are stored with every result.
 
 Joint kinematics: each joint's intrados and extrados end points are carried by both bodies
 from the initial pose; their separation splits into opening along the joint normal (carried by
@@ -25,12 +28,17 @@ from dem.core.settings import Settings
 
 def criterion(settings: Settings, model: Model) -> dict:
     """The collapse criterion and mode-reading parameters, as stored with each result."""
+    c = settings.collapse_confirm
+    confirm = ("" if c is None else
+               "; confirmed once any body point moved > collapse_confirm * size, or when the run ends (at rest or "
+               "not) still past the criterion; an excursion that came back below it is survived")
     return {
         "definition": "max displacement of any body point > collapse_fraction * size while that body moves "
-                      "faster than collapse_speed; mode from increments between mode_window displacements",
+                      f"faster than collapse_speed{confirm}; mode from increments between mode_window displacements",
         "size_m": model.size, "collapse_fraction": settings.collapse_fraction,
         "collapse_displacement_m": settings.collapse_fraction * model.size,
-        "collapse_speed_m_s": settings.collapse_speed, "mode_window": list(settings.mode_window),
+        "collapse_speed_m_s": settings.collapse_speed, "collapse_confirm": c,
+        "confirm_displacement_m": None if c is None else c * model.size, "mode_window": list(settings.mode_window),
         "hinge_fraction": settings.hinge_fraction, "slide_fraction": settings.slide_fraction,
     }
 

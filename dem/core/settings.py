@@ -73,6 +73,7 @@ class Settings:
     hinge_fraction: float = 0.05  # joint opens (hinge) if its opening increment > this x window increment
     slide_fraction: float = 0.05  # joint slides if its slip increment > this x window increment
     record_every: float = 0.01  # [s] time-history sampling (and collapse check) interval
+    collapse_confirm: float | None = None  # arches come back: confirm at this x size (docs/decisions/012-collapse-confirmed.md)
 
     def __post_init__(self) -> None:
         pos = {"mu_joint": self.mu_joint, "mu_base": self.mu_base, "g": self.g, "dt": self.dt,
@@ -98,6 +99,11 @@ class Settings:
         lo, hi = self.mode_window
         if not (0 < lo < hi <= self.collapse_fraction):
             raise ArchdemInputError("mode window must satisfy 0 < lo < hi <= collapse_fraction")
+        c = self.collapse_confirm
+        if c is not None and (isinstance(c, bool) or not (isinstance(c, (int, float)) and math.isfinite(c)
+                                                        and c > self.collapse_fraction)):
+            raise ArchdemInputError(f"collapse_confirm must be None or a number > collapse_fraction "
+                                    f"{self.collapse_fraction:g}, got {c!r}")
 
     def _check_contact_law(self) -> None:
         if self.contact_law not in CONTACT_LAWS:

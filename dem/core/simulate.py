@@ -3,7 +3,7 @@
 ``simulate(model, settings, load, duration)`` is the one entry point of every virtual experiment:
 it builds an engine, applies ``load.gravity(t)`` (or drives the base) before every step, records
 poses every ``settings.record_every`` and applies the collapse criterion of :mod:`dem.core.detect`
-(docs/physics/dem.md).
+(docs/physics/dem.md), confirmed as ``settings.collapse_confirm`` says (#5-collapse-criterion).
 """
 from __future__ import annotations
 
@@ -67,6 +67,9 @@ class SimResult:
     wall_s: float
     steps: int
     t_rest: float = float("nan")  # time [s] at which the run was ended at rest (``rest``), NaN if it was not
+    # the criterion's first firing [s] (NaN if never), kept when the excursion was recovered from (no collapse)
+    t_exceed: float = float("nan")
+    t_confirm: float = float("nan")  # when the collapse was confirmed [s] (= t_collapse without confirmation)
 
 
 def _kinetic_energy(mass: np.ndarray, inertia: np.ndarray, v: np.ndarray, w: np.ndarray, R: np.ndarray) -> float:
@@ -104,7 +107,11 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     """Run ``load`` on ``model`` for ``duration`` [s]; stop at collapse if ``stop_on_collapse``.
 
     ``record_every`` [s] defaults to ``settings.record_every``; the collapse criterion is
-    checked at each record. ``engine``: an unbuilt backend (default: ``settings.engine``).
+    checked at each record (``t_exceed``: its first firing). With ``settings.collapse_confirm`` None
+    a firing is the collapse; otherwise the run goes on and the collapse is confirmed once a point
+    moved more than ``collapse_confirm x size``, or when the run ends (at rest or at ``duration``)
+    still in an excursion past the criterion; ``t_collapse`` is then where that excursion passed
+    it, ``t_confirm`` where it was confirmed. ``engine``: an unbuilt backend (default: ``settings.engine``).
     ``rest = (t_from, window, growth)`` [s, s, m]: from ``t_from`` on, end the run (not collapsed,
     ``t_rest`` set) at the first record at which the largest displacement grew by less than
     ``growth`` over the last ``window`` (``rest_span``: varied by less than ``growth``, i.e. its
@@ -125,10 +132,13 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     n_steps = int(round(duration / settings.dt))
     tracker = detect.PointTracker(model)
     d_c = settings.collapse_fraction * model.size
+    d_ok = None if settings.collapse_confirm is None else settings.collapse_confirm * model.size
     T, P, RM, Gv, D, KE, FP = [], [], [], [], [], [], []
     mass = np.array([b.mass for b in model.bodies])
     inertia = np.array([b.inertia for b in model.bodies])
     collapsed, t_col, t_rest = False, float("nan"), float("nan")
+    # t_above: when the current excursion past d_c met the criterion (NaN below d_c or before it did)
+    t_exc = t_above = t_conf = float("nan")
     if rest is not None:
         rest_from, rest_k, rest_growth = rest[0], max(1, int(round(rest[1] / (rec * settings.dt)))), rest[2]
     driven = bool(getattr(load, "driven_base", False))
@@ -183,8 +193,14 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
                     j += m
                     step += m
             d, speed = record()
-            if not collapsed and d > d_c and speed > settings.collapse_speed:
-                collapsed, t_col = True, step * settings.dt
+            t_now = step * settings.dt
+            if d <= d_c:
+                t_above = float("nan")
+            elif math.isnan(t_above) and speed > settings.collapse_speed:
+                t_above = t_now
+                t_exc = t_now if math.isnan(t_exc) else t_exc
+            if not collapsed and not math.isnan(t_above) and (d_ok is None or d > d_ok):
+                collapsed, t_col, t_conf = True, t_above, t_now
                 if stop_on_collapse:
                     break
             if (rest is not None and not collapsed and step * settings.dt >= rest_from - 1e-9 and len(D) > rest_k
@@ -193,6 +209,9 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
                 break
     finally:
         eng.close()
+    if d_ok is not None and not collapsed and not math.isnan(t_above):
+        # the run ended (at rest or at its duration) still past the criterion: it did not come back
+        collapsed, t_col, t_conf = True, t_above, step * settings.dt
     nt, nb = len(T), model.n_bodies
     Q = Rotation.from_matrix(np.array(RM).reshape(-1, 3, 3)).as_quat().reshape(nt, nb, 4)
     hist = History(np.array(T), np.array(P), Q, np.array(Gv), np.array(D), np.array(KE), np.array(FP))
@@ -201,7 +220,7 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     oop = detect.out_of_plane(model, hist.pos[-1], Rs[-1])
     oop["max_dz_history_m"] = float(np.abs(tracker.all_displacements(hist.pos, Rs)[..., 2]).max())
     return SimResult(load.describe(), duration, hist, collapsed, t_col, joints, mode, oop,
-                     time.perf_counter() - wall0, step, t_rest)
+                     time.perf_counter() - wall0, step, t_rest, t_exc, t_conf)
 
 
 def read_mode(model: Model, settings: Settings, hist: History,

@@ -20,12 +20,13 @@ docs/decisions/006-solver-settings.md):
   (docs/decisions/006-solver-settings.md#pybullet-body-type);
 * every number passed to Bullet (vertices, positions, principal frames, masses, moments, the
   gravity of every step) is first made machine-independent (:mod:`dem.core.engines.inputs`);
-* relieved joints (effective contact < 1 or imperfect bands): Bullet's hull builder snaps hull
-  vertices to a grid of its bounding box, which moves a relieved face's contact ends and tilts
-  the joint's two faces against each other; each relieved face collides instead on a thin pad
-  built in its own frame, where its vertices stay exact (docs/engines.md#9-relieved-joints-in-pybullet);
-  so does every joint face on compliant joints, whose springs feel the snapping's micrometres, their
-  hulls not offset (docs/engines.md#10-compliant-joints);
+* joint faces on pads: Bullet's hull builder snaps hull vertices to a grid of its bounding box,
+  which moves a joint's ends wherever they are no extreme of the block (a relieved face's, a large
+  voussoir's) and tilts the joint's two faces against each other; every joint face collides
+  instead on a thin pad built in its own frame, where its vertices stay exact
+  (docs/engines.md#9-joint-faces-on-pads-in-pybullet), except a full joint's face on a side Bullet
+  keeps exact (its vertices corners of the piece's bounding box); compliant joints' hulls are not offset
+  (docs/engines.md#10-compliant-joints);
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
@@ -104,9 +105,12 @@ def offset_polygon(poly: np.ndarray, d: float) -> np.ndarray:
     return P + d * (n + n_prev) / (1.0 + (n * n_prev).sum(1, keepdims=True))
 
 
-#: Depth of the collision pad of a relieved joint face [x the model's size, the joint depth of an arch]:
-#: the recessed rest of the block stays beyond Bullet's contact distance (docs/engines.md#9-relieved-joints-in-pybullet).
+#: Depth of the collision pad of a relieved or compliant joint face [x the model's size, the joint depth of an
+#: arch]: the recessed rest of the block stays beyond Bullet's contact distance (docs/engines.md#9-joint-faces-on-pads-in-pybullet).
 RELIEF_PAD = 0.05
+#: ... of a full rigid joint face: at 0.05 the thickest free catalogue ring collapsed 6 % below its LP, at 0.1
+#: every catalogue ring is within 2 % (docs/decisions/013-tilt-on-any-arch.md)
+JOINT_PAD = 0.1
 
 
 def _clip(poly: np.ndarray, p0: np.ndarray, n_in: np.ndarray, h: float) -> np.ndarray:
@@ -127,24 +131,55 @@ def is_relieved(model: Model) -> bool:
     return float(model.source.get("contact", 1.0)) < 1.0 or bool(model.source.get("bands"))
 
 
-def relief_pieces(model: Model, k: int) -> list[tuple[np.ndarray, bool]]:
-    """Collision polygons of body ``k`` of a relieved model, each with a flag "own frame": its
-    pieces recessed by h = ``RELIEF_PAD`` x ``model.size`` behind each of its joint faces, plus one
-    pad (rectangle A_i, A_e, A_e + h n, A_i + h n, n into the body) per joint face."""
+def _on_box_corners(piece: np.ndarray, ends: np.ndarray, R: np.ndarray, c: np.ndarray) -> bool:
+    """True if ``ends`` (points of the 2-D ``piece``) are corners of the piece's bounding box in the body
+    frame (principal axes ``R`` at ``c``), which Bullet's hull builder keeps exactly."""
+    to_body = lambda q: (np.c_[q, np.full(len(q), c[2])] - c) @ R  # noqa: E731
+    B, E = to_body(piece), to_body(ends)
+    lo, hi = B.min(axis=0), B.max(axis=0)
+    tol = 1e-9 * float(np.max(hi - lo))
+    inplane = np.ptp(B, axis=0) > tol  # the mid-plane's flat axis (z) is no test
+    return bool(np.all((np.abs(E - lo) <= tol) | (np.abs(E - hi) <= tol) | ~inplane))
+
+
+def _face_exact(pieces, A_i: np.ndarray, A_e: np.ndarray, frame: tuple[np.ndarray, np.ndarray], size: float) -> bool:
+    """True if the piece whose side holds the joint A_i A_e has that side's vertices on corners of its
+    bounding box in the body frame: Bullet then builds the face where it is."""
+    d = A_e - A_i
+    L = float(np.linalg.norm(d))
+    n = np.array([-d[1], d[0]]) / L
+    for q in pieces:
+        q = np.asarray(q, float)
+        on = q[np.abs((q - A_i) @ n) <= 1e-9 * size]
+        t = (on - A_i) @ d / L
+        if len(on) >= 2 and t.max() > 1e-9 * size and t.min() < L - 1e-9 * size:  # the side overlaps the joint
+            return _on_box_corners(q, on, *frame)
+    return False
+
+
+def relief_pieces(model: Model, k: int, pad: float = RELIEF_PAD, frame: tuple[np.ndarray, np.ndarray] | None = None,
+                  ) -> list[tuple[np.ndarray, bool]]:
+    """Collision polygons of body ``k``, each with a flag "own frame": its pieces recessed by h =
+    ``pad`` x ``model.size`` behind each of its joint faces, plus one pad (rectangle A_i, A_e,
+    A_e + h n, A_i + h n, n into the body) per joint face. ``frame`` (full joints: the body's
+    principal axes R and centroid c): a face on a side whose vertices are corners of its piece's
+    bounding box keeps its own piece, which Bullet builds exactly (a rectangular block's, a frame's)."""
     pieces = [np.asarray(p, float) for p in model.bodies[k].pieces]
-    h = RELIEF_PAD * float(model.size)
-    pads = []
+    h = pad * float(model.size)
+    slabs = []
     for j in model.joints:
         if k not in (j.a, j.b):
             continue
         A_i, A_e = np.asarray(j.p_i, float), np.asarray(j.p_e, float)  # the contact ends
+        if frame is not None and _face_exact(model.bodies[k].pieces, A_i, A_e, frame, float(model.size)):
+            continue
         n_in = np.asarray(j.normal, float) * (1.0 if k == j.b else -1.0)
         pieces = [q for q in (_clip(p, A_i, n_in, h) for p in pieces) if len(q) >= 3]
-        pad = np.array([A_i, A_e, A_e + h * n_in, A_i + h * n_in])
-        if (pad[1, 0] - pad[0, 0]) * (pad[2, 1] - pad[0, 1]) - (pad[1, 1] - pad[0, 1]) * (pad[2, 0] - pad[0, 0]) < 0:
-            pad = pad[::-1].copy()
-        pads.append(pad)
-    return [(p, False) for p in pieces] + [(p, True) for p in pads]
+        slab = np.array([A_i, A_e, A_e + h * n_in, A_i + h * n_in])
+        if (slab[1, 0] - slab[0, 0]) * (slab[2, 1] - slab[0, 1]) - (slab[1, 1] - slab[0, 1]) * (slab[2, 0] - slab[0, 0]) < 0:
+            slab = slab[::-1].copy()
+        slabs.append(slab)
+    return [(p, False) for p in pieces] + [(p, True) for p in slabs]
 
 
 def _write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -267,11 +302,13 @@ class PyBulletEngine(Engine):
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
         self._ids: list[int] = []
         self._R0 = np.zeros((model.n_bodies, 3, 3))
+        full = not (is_relieved(model) or settings.contact_law == "compliant")
         for k, b in enumerate(model.bodies):
             R, I, q = principal_frame(b.inertia)  # machine-independent (dem.core.engines.inputs)
             c = on_grid(b.centroid)
             mass = significant(b.mass)
-            s = shape(relief_pieces(model, k), b.width, R, c, float(c[2]))
+            s = shape(relief_pieces(model, k, JOINT_PAD, (R, c)) if full else relief_pieces(model, k),
+                      b.width, R, c, float(c[2]))
             bid = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=s, basePosition=c.tolist(),
                                     baseOrientation=q)
             p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],

@@ -47,10 +47,12 @@ def load_shake(path) -> dict:
     with h5py.File(path, "r") as f:
         if f.attrs.get("format") != FORMAT:
             raise ArchdemInputError(f"{path} is not an archdem shake result")
+        protocol = json.loads(f.attrs["protocol"])
+        protocol.setdefault("confirm_fraction", None)  # before docs/decisions/012: the firing was the collapse
         return {
             "label": str(f.attrs["label"]), "model": read_model(f["model"]),
             "settings": Settings.from_dict(json.loads(f.attrs["settings"])),
-            "protocol": json.loads(f.attrs["protocol"]), "criterion": json.loads(f.attrs["criterion"]),
+            "protocol": protocol, "criterion": json.loads(f.attrs["criterion"]),
             "summary": json.loads(f.attrs["summary"]), "motion": json.loads(f["input"].attrs["motion"]),
             "input_t": f["input/t"][()], "input_a": f["input/a_g"][()],
             "sim": read_sim(f["sim"]), "crown_u": f["sim/crown_u"][()],

@@ -16,7 +16,12 @@ The fraction is 1.0 by default, larger than the 0.06 of the tilt test: under a p
 may open well past its static limit during the input and still close again
 (docs/physics/dynamics.md#6-time-integration-and-the-collapse-rule: passing ``phi_cr`` while the
 input acts is not collapse), whereas a body point displaced by a full ring thickness (a block: by its
-height, i.e. rotated ~2 x its slenderness angle) is falling.
+height, i.e. rotated ~2 x its slenderness angle) is usually falling. Usually, not always: the
+criterion's firing is an **excursion**, and the run goes on. The collapse is **confirmed** once a
+point has moved ``confirm_fraction x size`` (2 ring thicknesses), or when the run ends — at rest or
+at its duration — still past the criterion; an arch that comes back below it has survived, its
+peak and residual displacements and the firing (``t_exceed``) reported
+(docs/decisions/012-collapse-confirmed.md).
 
 **First impact / rebound**: from the horizontal displacement ``u(t)`` of the crown body's
 centroid (the block's centroid for a single block). The motion starts when ``|u|`` first
@@ -28,8 +33,9 @@ impact follows. ``collapse_phase`` is ``"before-first-rebound"`` (the analytic
 happened), else ``"after-first-rebound"`` (the analytic ``after-impact`` mode).
 
 Crown displacement: ``peak_crown_mm`` = max ``|u|`` [mm] over the record; ``residual_crown_mm``
-= ``u`` at the end of the record (for a collapsed run: at the collapse detection, since the run
-stops there by default).
+= ``u`` at the end of the record (for a collapsed run: at the confirmation, since the run stops
+there by default). ``collapse_phase`` compares the rebound with ``t_collapse``, the instant the
+excursion that did not come back passed the criterion.
 """
 from __future__ import annotations
 
@@ -64,7 +70,9 @@ class ShakeProtocol:
     tail: float = 1.0  # zero acceleration after the motion [s]; a 5 s tail changed no threshold
     #   (docs/decisions/005-shake-end-at-rest.md)
     duration: float | None = None  # total simulated time [s]; default motion duration + tail
-    collapse_fraction: float = 1.0  # collapse: a point moved > this x size while moving
+    collapse_fraction: float = 1.0  # collapse: a point moved > this x size while moving ...
+    # ... confirmed at this x size or by ending past it: arches came back from 1.13 x (decision 012); None: at once
+    confirm_fraction: float | None = 2.0
     record_every: float = 0.005  # [s] history sampling (and collapse check)
     onset_mm: float = 0.1  # crown displacement at which the motion is said to start [mm]
     stop_on_collapse: bool = True
@@ -87,6 +95,10 @@ class ShakeProtocol:
                 raise ArchdemInputError(f"shake protocol {k} must be > 0, got {v!r}")
         if self.load not in LOADS:
             raise ArchdemInputError(f"shake load must be one of {', '.join(LOADS)}, got {self.load!r}")
+        c = self.confirm_fraction
+        if c is not None and not (math.isfinite(c) and c > self.collapse_fraction):
+            raise ArchdemInputError(f"shake protocol confirm_fraction must be None or > collapse_fraction "
+                                    f"{self.collapse_fraction:g}, got {c!r}")
 
     def total_duration(self, motion: GroundMotion) -> float:
         return float(self.duration) if self.duration is not None else float(motion.duration) + self.tail
@@ -119,6 +131,16 @@ class ShakeResult:
         return float(self.sim.t_collapse) if self.sim.collapsed else None
 
     @property
+    def t_exceed(self) -> float | None:
+        """When the criterion first fired [s] (the old rule's collapse time), None if it never did."""
+        return None if math.isnan(self.sim.t_exceed) else float(self.sim.t_exceed)
+
+    @property
+    def recovered(self) -> bool:
+        """The criterion fired but the arch came back: survived after an excursion."""
+        return self.t_exceed is not None and not self.collapsed
+
+    @property
     def mode(self) -> str:
         return self.sim.mode
 
@@ -138,6 +160,9 @@ class ShakeResult:
             "collapse_phase": self.collapse_phase, "t_motion_start": self.t_start, "t_first_rebound": self.t_rebound,
             "peak_crown_mm": self.peak_crown_mm, "residual_crown_mm": self.residual_crown_mm,
             "max_displacement_mm": float(np.max(self.sim.history.dmax) * 1e3),
+            "residual_displacement_mm": float(self.sim.history.dmax[-1] * 1e3),
+            "t_exceed": self.t_exceed, "recovered": self.recovered,
+            "t_collapse_confirmed": float(self.sim.t_confirm) if self.collapsed else None,
             "joints": [j.to_dict() for j in self.sim.joints],
             "input": m, "pga_g": float(self.motion.pga / G), "duration": self.sim.duration,
             "config": self.model.source.get("config", ""), "contact": self.model.source.get("contact", 1.0),
@@ -150,9 +175,9 @@ class ShakeResult:
 
 
 def shake_settings(settings: Settings, protocol: ShakeProtocol) -> Settings:
-    """``settings`` with the shake collapse fraction and record interval of ``protocol``."""
+    """``settings`` with the shake collapse fraction, its confirmation and record interval of ``protocol``."""
     lo, hi = settings.mode_window
-    return settings.with_(collapse_fraction=protocol.collapse_fraction,
+    return settings.with_(collapse_fraction=protocol.collapse_fraction, collapse_confirm=protocol.confirm_fraction,
                           record_every=max(protocol.record_every, settings.dt),
                           mode_window=(lo, min(hi, protocol.collapse_fraction)))
 

@@ -102,8 +102,11 @@ def _run_shake(args: argparse.Namespace) -> int:
         return 0
     act = ", ".join(f"{j['joint']}:{j['state']}" for j in s["joints"] if j["state"] != "closed")
     print(f"{label} ({args.config}, mu {settings.mu_joint:g}/{settings.mu_base:g}), PGA {s['pga_g']:.3f} g: "
-          + (f"COLLAPSE at t = {res.t_collapse:.3f} s ({res.collapse_phase}), {res.mode} [{act}]"
-             if res.collapsed else f"survival, {res.mode}")
+          + (f"COLLAPSE at t = {res.t_collapse:.3f} s ({res.collapse_phase}; confirmed at "
+             f"{s['t_collapse_confirmed']:.3f} s), {res.mode} [{act}]" if res.collapsed else
+             f"survival after an excursion to {s['max_displacement_mm']:.1f} mm (criterion at t = "
+             f"{res.t_exceed:.3f} s, {s['residual_displacement_mm']:.1f} mm at the end), {res.mode}"
+             if res.recovered else f"survival, {res.mode}")
           + f"; crown peak {res.peak_crown_mm:.2f} mm, residual {res.residual_crown_mm:.2f} mm; "
             f"{res.sim.wall_s:.1f} s -> {path}")
     return 0

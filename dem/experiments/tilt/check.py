@@ -172,6 +172,12 @@ def _hinge_text(hinges) -> str:
     return " ".join(f"{j} {f}" for j, f in hinges)
 
 
+def lp_check_of(row: TiltCheck, lp, law: str = "rigid") -> LpCheck:
+    """The check of a tilt validation row (:func:`check`) against its LP ``lp`` (the one it was checked against)."""
+    slides = any("sliding" in str(v) for v in lp.joint_states.values())
+    return LpCheck(row.id, row.lam, row.lp_lam, row.lp_hinges, bool(slides), row.no_sliding, law, row.hinges)
+
+
 def lp_check(result, assembly, lp=None) -> LpCheck | None:
     """The check of a :class:`dem.experiments.tilt.run.TiltResult` of ``assembly`` against :func:`reference_lp`
     (``lp`` if already solved); None without blocks to solve (a model built without an assembly)."""

@@ -36,7 +36,6 @@ from dem.core.model import Model, as_model
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
 from dem.experiments.tilt.check import LpCheck, lp_check, prevents_sliding
-from specimens.drawn import DrawnAssembly
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
@@ -55,8 +54,8 @@ LENGTH_REF = 0.400
 def time_scale_of(target, time_scale: float | str = "auto") -> float:
     """Time scale of the tilt protocol and the time step: for ``"auto"``, ``max(1, sqrt(L / L_ref))``
     with the arch's Rc against :data:`RC_REF` (a :class:`~specimens.geometry.PointedArch` or blocks
-    cut from one) or a drawing's length scale against :data:`LENGTH_REF`; 1 for a model without
-    blocks (docs/physics/dem.md#7-tilt-test-hold-and-bisect: similar arches run the same
+    cut from one) or the blocks' length scale against :data:`LENGTH_REF` (a drawing, a rocking
+    frame); 1 for a model without blocks (docs/physics/dem.md#7-tilt-test-hold-and-bisect: similar arches run the same
     dimensionless test); else the number given."""
     if time_scale != "auto":
         s = float(time_scale)
@@ -67,10 +66,11 @@ def time_scale_of(target, time_scale: float | str = "auto") -> float:
         target = target.assembly
     if target is None:
         return 1.0
-    if isinstance(target, DrawnAssembly):
-        return max(1.0, math.sqrt(float(target.length_scale) / LENGTH_REF))
-    arch = target if isinstance(target, PointedArch) else target.arch
-    return max(1.0, math.sqrt(arch.Rc / RC_REF))
+    arch = target if isinstance(target, PointedArch) else getattr(target, "arch", None)
+    if arch is not None:
+        return max(1.0, math.sqrt(arch.Rc / RC_REF))
+    length = getattr(target, "length_scale", None)  # a drawing's, a rocking frame's
+    return 1.0 if length is None else max(1.0, math.sqrt(float(length) / LENGTH_REF))
 
 
 @dataclass(frozen=True)

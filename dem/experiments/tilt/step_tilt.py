@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.experiments.tilt.case import DEM_CASE, make_case, replay_tilt
-from dem.experiments.tilt.check import check, reference_lp
+from dem.experiments.tilt.check import LP_TOLERANCE, check, lp_check_of, reference_lp
 from dem.experiments.tilt.figure import save_tilt_figure
 from dem.studies.sweep import case_key, run_study
 from specimens.blocks import discretise
@@ -39,6 +39,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
                     study_attrs={"study": "campaign-tilt", "config": ctx.config, "quick": ctx.quick})
     by_key = res.by_key
     rows = []
+    checks = []  # every tilt beside the LP of its own blocks (the same check as archdem tilt's)
     for s in ctx.specimens:
         asm = discretise(s.arch, config=ctx.config, contact=ctx.contact_of(s))
         lp = {k: reference_lp(asm, mj, mb) for k, (mj, mb) in
@@ -58,6 +59,8 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
             out[f"mode_{k}"] = row.mode
             out[f"joints_{k}"] = " ".join(f"{n}:{st}" for n, st, _ in states if st != "closed")
             out[f"n_sims_{k}"] = row.n_sims
+            if ok:
+                checks.append(lp_check_of(row, lp[k], ctx.law_of(s).get("contact_law", "rigid")))
         out["lambda_lp_reference"] = lp["reference"].lam
         out["err_reference_vs_lp_pct"] = rows_k["reference"].err_pct
         out["lambda_lp_no_sliding"] = lp["no_sliding"].lam
@@ -102,6 +105,10 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
         f"At the reference friction the DEM lambda is {np.nanmin(err_ref):+.1f} % to {np.nanmax(err_ref):+.1f} % from the "
         "associative LP (which is no bound for Coulomb friction).",
     ]
+    off = [c.warning for c in checks if c.agrees is False]
+    findings.append(f"Every tilt is within {100 * LP_TOLERANCE:g} % of the LP of its own blocks." if not off else
+                    f"{len(off)} of {len(checks)} tilts depart from the LP of their own blocks by more than "
+                    f"{100 * LP_TOLERANCE:g} %: " + " ".join(w + "." for w in off))
     if "no_sliding" in frictions:
         err = np.array([r["err_no_sliding_pct"] for r in rows])
         k = int(np.nanargmax(np.abs(err)))

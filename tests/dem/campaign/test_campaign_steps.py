@@ -288,8 +288,17 @@ def test_tilt_findings_agree_with_the_table(campaign):
                  r"joints(?:: (.+))?\.",
         "err": r"At the reference friction the DEM lambda is ([-+][\d.]+) % to ([-+][\d.]+) % from the associative LP "
                r"\(which is no bound for Coulomb friction\)\.",
+        "check": r"(?:Every tilt is within 3 % of the LP of its own blocks\.|(\d+) of (\d+) tilts depart from the LP of "
+                 r"their own blocks by more than 3 %: (.+))",
     })
-    assert set(m) == {"slide", "err"}
+    assert set(m) == {"slide", "err", "check"}
+    # every tilt's own check (docs/physics/dem.md#76-every-tilt-beside-its-own-lp): the table's departures, named
+    off = [r["id"] for r in rows if abs(float(r["err_reference_vs_lp_pct"])) > 3]
+    if off:
+        assert (int(m["check"][1]), int(m["check"][2])) == (len(off), len(rows))
+        assert all(f"{i}: tilt lambda" in m["check"][3] and "likely cause" in m["check"][3] for i in off)
+    else:
+        assert m["check"][1] is None
     sliding = [r["id"] for r in rows if r["mode_reference"] in ("sliding", "mixed")]
     assert sliding == list(TILT_SLIDING)
     assert (int(m["slide"][3]), int(m["slide"][4]), m["slide"][5]) == (len(sliding), len(rows), ", ".join(sliding))

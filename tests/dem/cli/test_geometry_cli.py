@@ -167,6 +167,7 @@ def test_a_gap_is_shown_where_the_drawing_stands_and_drawn(tmp_path, capsys):
 BLOCK = [(0, 0), (200, 0), (200, 800), (0, 800)]
 
 
+@pytest.mark.slow
 def test_a_drawn_structure_carries_no_glued_or_free_label(tmp_path, capsys):
     """Text, JSON, result file names and the HDF5 file say "drawn"; --config beside --geometry is refused."""
     import h5py

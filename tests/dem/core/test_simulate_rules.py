@@ -246,3 +246,75 @@ def test_onset_is_the_first_record_of_the_last_excursion_above_the_window_start(
     h = _history(block, frames, np.array(factors) * LO)
     sim = SimResult({}, 1.0, h, True, float(h.t[-1]), [], "rocking", {}, 0.0, 0)
     assert onset_time(block, S, sim) == h.t[k_onset]
+
+
+# --------------------------------------------------------------------- confirmed collapse (shakes)
+SC = S.with_(collapse_confirm=2 * S.collapse_fraction)  # confirmed at twice the collapse distance
+
+
+def _still(model):
+    return _slid(model, 0.0, 0.0)
+
+
+def _record_t(k: int) -> float:
+    return k * S.record_steps * S.dt
+
+
+def test_without_confirmation_the_criterion_firing_is_the_collapse(block):
+    # the tilt's rule (collapse_confirm None): collapse, exceedance and confirmation at the first firing
+    assert S.collapse_confirm is None
+    sim = _run(block, [_still(block), _slid(block, 1.1 * D_C, 1.1 * V_C), _slid(block, 0.5 * D_C, 0.0)])
+    assert sim.collapsed and sim.t_collapse == sim.t_exceed == sim.t_confirm == _record_t(1)
+
+
+def test_an_excursion_the_model_comes_back_from_is_no_collapse(block):
+    # past the criterion (and fast) at records 1-2, back below it from record 3: survived, the firing kept
+    frames = [_still(block), _slid(block, 1.1 * D_C, 1.1 * V_C), _slid(block, 1.9 * D_C, 1.1 * V_C),
+              _slid(block, 0.5 * D_C, 1.1 * V_C), _slid(block, 0.5 * D_C, 0.0)]
+    sim = _run(block, frames, settings=SC)
+    assert not sim.collapsed and math.isnan(sim.t_collapse) and math.isnan(sim.t_confirm)
+    assert sim.t_exceed == _record_t(1) and len(sim.history.t) == len(frames)  # simulated to its end
+
+
+@pytest.mark.parametrize("f_confirm, collapsed", [(1.1, True), (0.9, False)])
+def test_a_collapse_is_confirmed_at_the_confirm_distance(block, f_confirm, collapsed):
+    # the criterion fires at record 1; record 2 is at f_confirm x the confirmation distance; then back
+    d_ok = SC.collapse_confirm * H
+    frames = [_still(block), _slid(block, 1.1 * D_C, 1.1 * V_C), _slid(block, f_confirm * d_ok, 0.0),
+              _slid(block, 0.5 * D_C, 0.0), _slid(block, 0.5 * D_C, 0.0)]
+    sim = _run(block, frames, settings=SC)
+    assert sim.collapsed is collapsed and sim.t_exceed == _record_t(1)
+    if collapsed:  # no speed asked there; stopped at the confirmation; the collapse dated at the firing
+        assert (sim.t_collapse, sim.t_confirm) == (_record_t(1), _record_t(2)) and len(sim.history.t) == 3
+
+
+def test_the_collapse_is_dated_at_the_excursion_that_did_not_come_back(block):
+    # a first excursion (records 1-2) comes back (record 3); the second (from record 4) is confirmed at record 5
+    d_ok = SC.collapse_confirm * H
+    frames = [_still(block), _slid(block, 1.1 * D_C, V_C * 2), _slid(block, 1.5 * D_C, V_C * 2),
+              _slid(block, 0.5 * D_C, V_C * 2), _slid(block, 1.1 * D_C, V_C * 2), _slid(block, 1.1 * d_ok, V_C * 2)]
+    sim = _run(block, frames, settings=SC)
+    assert sim.collapsed and sim.t_exceed == _record_t(1)
+    assert (sim.t_collapse, sim.t_confirm) == (_record_t(4), _record_t(5))
+    # a slow record past the distance does not start an excursion: the criterion needs the speed
+    frames[4] = _slid(block, 1.1 * D_C, 0.9 * V_C)
+    assert _run(block, frames, settings=SC).t_collapse == _record_t(5)
+
+
+@pytest.mark.parametrize("rest", [False, True])
+def test_ending_past_the_criterion_is_a_collapse(block, rest):
+    # fired at record 1, then still (1.5 x the collapse distance, below the confirmation) to the end or
+    # until the rest rule ends the run: it did not come back, confirmed when the run ends
+    frames = [_still(block), _slid(block, 1.5 * D_C, 1.1 * V_C)] + [_slid(block, 1.5 * D_C, 0.0)] * 6
+    eng = ScriptedEngine(frames, SC.record_steps)
+    rule = (_record_t(2), 2 * SC.record_every, 1e-6) if rest else None
+    sim = simulate(block, SC, Rest(), (len(frames) - 1) * SC.record_every, engine=eng, rest=rule, rest_span=True)
+    assert sim.collapsed and sim.t_collapse == sim.t_exceed == _record_t(1)
+    t_end = _record_t(3) if rest else _record_t(len(frames) - 1)  # at rest: no variation over records 1-3
+    assert sim.t_confirm == t_end == sim.history.t[-1]
+    assert (sim.t_rest == t_end) if rest else math.isnan(sim.t_rest)
+    # the same end below the criterion's distance is a survival after an excursion
+    frames = [_still(block), _slid(block, 1.5 * D_C, 1.1 * V_C)] + [_slid(block, 0.9 * D_C, 0.0)] * 6
+    eng = ScriptedEngine(frames, SC.record_steps)
+    sim = simulate(block, SC, Rest(), (len(frames) - 1) * SC.record_every, engine=eng, rest=rule, rest_span=True)
+    assert not sim.collapsed and sim.t_exceed == _record_t(1)

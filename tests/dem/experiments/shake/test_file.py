@@ -74,3 +74,17 @@ def test_the_two_runs_cover_both_outcomes(collapsed, survived):
     for r in (collapsed, survived):
         h = r.sim.history
         assert len(h.t) > 2 and np.all(np.isfinite(h.fpower)) and h.pos.shape == (len(h.t), r.model.n_bodies, 3)
+
+
+def test_a_file_from_before_the_confirmed_collapse_reads_with_its_own_rule(tmp_path, collapsed):
+    # written before decision 012: no confirmation in the settings or the protocol, no t_exceed or
+    # t_confirm in the simulation; it reads as what its rule was: the criterion's firing is the collapse
+    p = save_shake(collapsed, tmp_path / "old.h5")
+    with h5py.File(p, "r+") as f:
+        settings, protocol = json.loads(f.attrs["settings"]), json.loads(f.attrs["protocol"])
+        del settings["collapse_confirm"], protocol["confirm_fraction"]
+        f.attrs["settings"], f.attrs["protocol"] = json.dumps(settings), json.dumps(protocol)
+        del f["sim"].attrs["t_exceed"], f["sim"].attrs["t_confirm"]
+    d = load_shake(p)
+    assert d["settings"].collapse_confirm is None and ShakeProtocol(**d["protocol"]).confirm_fraction is None
+    assert d["sim"].collapsed and d["sim"].t_exceed == d["sim"].t_confirm == d["sim"].t_collapse

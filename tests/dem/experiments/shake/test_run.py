@@ -152,3 +152,83 @@ def test_bad_rest_rule_is_an_input_error():
     for kw in ({"rest_after": -0.1}, {"rest_window": 0.0}, {"rest_span": float("nan")}):
         with pytest.raises(ArchdemInputError, match="rest"):
             ShakeProtocol(**kw)
+
+
+def test_bad_confirmation_is_an_input_error():
+    for bad in (1.0, 0.5, float("nan")):
+        with pytest.raises(ArchdemInputError, match="confirm_fraction"):
+            ShakeProtocol(confirm_fraction=bad)
+    assert ShakeProtocol(confirm_fraction=None).confirm_fraction is None  # the criterion's firing is the collapse
+
+
+# a square block (b/h = 1): the collapse criterion (its far top corner moved by its height) fires at a
+# rotation of 2 asin(1 / (2 sqrt 2)) = 41.4 deg, inside its slenderness angle of 45 deg
+SQUARE = 0.2
+
+
+@pytest.mark.slow
+def test_a_block_the_pulse_pushes_back_from_past_its_slenderness_survives():
+    """A one-cycle 2 Hz sine 5 % below the analytic overturning amplitude throws the square block to
+    61.7 deg (analytic and DEM alike), past the criterion and past its slenderness angle, and the second
+    half of the pulse brings it back: survival, with the firing, peak and residual displacement kept. The
+    rule of a firing as the collapse called it one at 0.265 s; 5 % above the threshold it falls and the
+    collapse is confirmed at two block heights (docs/decisions/012-collapse-confirmed.md)."""
+    from analytic.rocking.domain import failure_domain
+    from analytic.rocking.dynamics import simulate as rock
+    from analytic.rocking.rocking_block import RockingBlock
+    from dem.core.settings import dynamics_settings
+
+    rb = RockingBlock(SQUARE / 2, SQUARE / 2)
+    a_an = failure_domain(rb, "sine0", [2.0], a_max_ratio=8.0, n_scan=16, workers=1).columns[0].thresholds[0][0]
+    blk = single_block(SQUARE, SQUARE)
+    st = dynamics_settings(mu_joint=NO_SLIDING_MU, mu_base=NO_SLIDING_MU, planar=True)
+    below = shake(blk, SinePulse(0.95 * a_an, 2.0), st, ShakeProtocol(tail=2.0))
+    assert not below.collapsed and below.recovered and below.t_exceed is not None
+    phi = math.degrees(rock(rb, SinePulse(0.95 * a_an, 2.0)).max_ratio * rb.alpha)
+    assert phi > 55.0 and math.degrees(_max_rotation(below)) == pytest.approx(phi, abs=1.0)
+    s = below.summary()
+    assert s["max_displacement_mm"] > 1.4e3 * SQUARE and s["residual_displacement_mm"] < 0.1e3 * SQUARE
+    assert s["t_end_at_rest"] is not None and s["recovered"] and s["t_collapse_confirmed"] is None
+    old = shake(blk, SinePulse(0.95 * a_an, 2.0), st, ShakeProtocol(tail=2.0, confirm_fraction=None))
+    assert old.collapsed and old.t_collapse == below.t_exceed
+    above = shake(blk, SinePulse(1.05 * a_an, 2.0), st, ShakeProtocol(tail=2.0))
+    assert above.collapsed and above.t_collapse == above.t_exceed
+    assert above.sim.t_confirm > above.t_collapse and above.sim.history.dmax[-1] > 2.0 * SQUARE
+    assert math.degrees(_max_rotation(above)) > 85.0  # on its side
+
+
+@pytest.mark.slow
+def test_the_quick_campaigns_6hz_top_amplitude_is_an_excursion_the_arch_recovers_from():
+    """Sh02-Sd020 (glued, reference friction, MuJoCo) under the 6 Hz one-cycle sine at 4 x its static
+    lambda, the top of the quick campaign's scan: a point passes the ring thickness (48 mm) at 0.12 s
+    and the arch comes back to rest 3.6 mm from where it started. Until decision 012 this was a collapse."""
+    from dem.core.model import as_model
+    from dem.core.settings import dynamics_settings
+    from dem.experiments.shake.thresholds import static_onset
+
+    model = as_model("Sh02-Sd020")
+    st = dynamics_settings()
+    a = 4.0 * static_onset(model, st)
+    r = shake(model, SinePulse(a * G, 6.0), st)
+    s = r.summary()
+    assert not r.collapsed and r.recovered and r.t_exceed == pytest.approx(0.12, abs=0.011)
+    assert s["max_displacement_mm"] > 1.05e3 * model.size and s["residual_displacement_mm"] < 0.15e3 * model.size
+    assert s["t_end_at_rest"] is not None
+    assert shake(model, SinePulse(a * G, 6.0), st, ShakeProtocol(confirm_fraction=None)).collapsed
+
+
+@pytest.mark.slow
+def test_the_issue_case_on_lmgc90_recovers_and_stands():
+    """Issue 53: Sh06-Sd015, free, friction 0.577 everywhere, 6 Hz at 1.3 g on LMGC90 passed the ring
+    thickness (49.9 mm at 0.185 s; the criterion fired at 0.14 s) and stood again 15 mm from where it
+    started: a survival, the firing kept."""
+    pytest.importorskip("compas_lmgc90", reason="the lmgc90 extra is not installed (pip install -e '.[lmgc90]')")
+    from dem.core.model import as_model
+    from dem.core.settings import dynamics_settings
+
+    model = as_model("Sh06-Sd015", config="free")
+    r = shake(model, SinePulse(1.3 * G, 6.0), dynamics_settings(mu_joint=0.577, mu_base=0.577, engine="lmgc90"))
+    s = r.summary()
+    assert not r.collapsed and r.recovered and r.t_exceed == pytest.approx(0.14, abs=0.011)
+    assert s["max_displacement_mm"] == pytest.approx(49.9, abs=1.0) and s["max_displacement_mm"] > 1e3 * model.size
+    assert s["residual_displacement_mm"] == pytest.approx(15.0, abs=1.0) and s["t_end_at_rest"] is not None

@@ -32,7 +32,7 @@ def test_a_tilt_off_its_lp_warns_in_one_line(tmp_path, capsys, monkeypatch):
     # each joint's faces against each other; the thin ring then tips 16 % below its LP
     import dem.core.engines.pybullet_engine as pe
 
-    monkeypatch.setattr(pe, "relief_pieces", lambda model, k: list(model.bodies[k].pieces))
+    monkeypatch.setattr(pe, "relief_pieces", lambda model, k, pad=0, frame=None: list(model.bodies[k].pieces))
     args = ["tilt", "--Ri", "1", "--Re", "1.15", "--e", "0", "--voussoirs", "5", "--config", "free",
             "--out", str(tmp_path)]
     assert main([*args, "--json"]) == 0

@@ -21,8 +21,8 @@ def case():
     return asm, m, ns
 
 
-# Measured on this specimen with the default protocol: no sliding 0.3513 (+0.05 % from the LP, LP
-# hinge layout), reference friction 0.3497 (from the former first bracket (0.95, 1.01) x LP: 0.3494,
+# Measured on this specimen with the default protocol: no sliding 0.3480 on pads (-0.90 % from the LP,
+# the LP's hinges and L7; 0.3513, +0.05 %, before them), reference friction 0.3497 (from the former first bracket (0.95, 1.01) x LP: 0.3494,
 # -0.50 %, and 0.3507). Which catalogue case misses is a matter of the last
 # bits (docs/validation.md#7-non-monotonic-outcomes-near-the-threshold): with levels
 # ramped 1 s instead of 0.5 s this specimen collapsed spuriously at 0.3441 (-2.0 %) in a disordered
@@ -41,7 +41,7 @@ def test_no_sliding_lambda_matches_lp(case):
 
 @pytest.mark.slow
 def test_no_sliding_lambda_of_this_specimen(case):
-    # this case's own reading beside the 3 % rule: measured +0.05 % (0.35133 against 0.35115).
+    # this case's own reading beside the 3 % rule: measured -0.90 % (0.34800 against 0.35115).
     # 1 %: thresholds near the bracket are reproducible to +-1 % (twice the 0.5 % bisection bracket;
     # docs/validation.md#7-non-monotonic-outcomes-near-the-threshold); a regression moves it further
     asm, m, ns = case
@@ -55,10 +55,21 @@ def test_no_sliding_hinges_match_lp(case):
     lp = lim.solve_lp(asm, float("inf"), float("inf"))
     hinges = tuple((j.joint, j.face) for j in ns.joints if j.state in ("hinge", "hinge+slide"))
     # the LP layout, or another four-hinge mechanism within 0.5 % of the LP lambda (the rule:
-    # near-optimal mechanisms are indistinguishable at the DEM's +-1 % threshold reproducibility)
+    # near-optimal mechanisms are indistinguishable at the DEM's +-1 % threshold reproducibility), or the
+    # LP's four and one joint beside one of them whose mechanism in its place is within 0.5 %: the arch
+    # moves as a mix of the two (on pads this specimen opens L7 beside L6, +0.40 %; docs/validation.md#5)
     if hinges != lp.hinges:
-        assert len(hinges) == 4
-        assert abs(lim.mechanism_lambda(asm, hinges) - lp.lam) <= 0.005 * lp.lam
+        if len(hinges) == 4:
+            assert abs(lim.mechanism_lambda(asm, hinges) - lp.lam) <= 0.005 * lp.lam
+        else:
+            extra = [h for h in hinges if h not in lp.hinges]
+            assert set(lp.hinges) <= set(hinges) and len(extra) == 1
+            names = [j.name for j in asm.joints]
+            k = names.index(extra[0][0])
+            beside = [h for h in lp.hinges if abs(names.index(h[0]) - k) == 1 and h[1] == extra[0][1]]
+            assert beside
+            swapped = tuple(extra[0] if h == beside[0] else h for h in lp.hinges)
+            assert abs(lim.mechanism_lambda(asm, swapped) - lp.lam) <= 0.005 * lp.lam
     assert ns.mode == "rocking"
 
 

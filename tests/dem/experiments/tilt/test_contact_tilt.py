@@ -15,7 +15,7 @@ from specimens.constants import NO_SLIDING_MU
 pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
 
 # the thinnest specimen, where PyBullet's hull rounding of relieved faces cost 4.9 % before the pads
-# of docs/engines.md#9-relieved-joints-in-pybullet
+# of docs/engines.md#9-joint-faces-on-pads-in-pybullet
 SID, CONTACT = "Sh06-Sd010", 0.7
 
 
