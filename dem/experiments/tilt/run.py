@@ -52,11 +52,11 @@ LENGTH_REF = 0.400
 
 
 def time_scale_of(target, time_scale: float | str = "auto") -> float:
-    """Time scale of the tilt protocol and the time step: for ``"auto"``, ``max(1, sqrt(L / L_ref))``
-    with the arch's Rc against :data:`RC_REF` (a :class:`~specimens.geometry.PointedArch` or blocks
-    cut from one) or the blocks' length scale against :data:`LENGTH_REF` (a drawing, a rocking
-    frame); 1 for a model without blocks (docs/physics/dem.md#7-tilt-test-hold-and-bisect: similar arches run the same
-    dimensionless test); else the number given."""
+    """Time scale of the tilt protocol (and of the friction map's time step): for ``"auto"``,
+    ``max(1, sqrt(L / L_ref))`` with the arch's Rc against :data:`RC_REF` (a
+    :class:`~specimens.geometry.PointedArch` or blocks cut from one) or the blocks' length scale against
+    :data:`LENGTH_REF` (a drawing, a rocking frame); 1 for a model without blocks; else the number
+    given. Similar arches then run the same dimensionless test (docs/physics/dem.md#75-arches-larger-than-the-catalogue)."""
     if time_scale != "auto":
         s = float(time_scale)
         if not (math.isfinite(s) and s > 0):
@@ -100,8 +100,8 @@ class TiltProtocol:
 
     guess: float | None = None  # hold: first estimate of lambda; None: found as ``start`` says
     start: str = "auto"  # hold: "scan" (a ramp at scan_rate), "lp" (lp_guess), "auto" (lp when the blocks are known)
-    # the durations above (and the time step) are those of the catalogue's scale; a larger arch runs them
-    # x its time_scale_of (None: found from the arch by tilt(); a number: already applied)
+    # the durations above are the catalogue's; a larger arch runs them (and records) x its time_scale_of
+    # (None: found from the arch by tilt(); a number: already applied)
     time_scale: float | None = None
 
     def __post_init__(self) -> None:
@@ -176,7 +176,7 @@ class TiltResult:
             "id": self.label, "lambda": self.lam, "theta_deg": self.theta_deg, "mode": self.mode,
             "joints": [j.to_dict() if hasattr(j, "to_dict") else j for j in self.joints],
             "bracket": list(self.bracket), "n_sims": self.n_sims, "wall_s": self.wall_s,
-            "protocol": self.protocol.kind, "config": self.model.source.get("config", ""),
+            "protocol": self.protocol.kind, "time_scale": self.protocol.time_scale, "config": self.model.source.get("config", ""),
             "contact": self.model.source.get("contact", 1.0),
             "mu_joint": self.settings.mu_joint, "mu_base": self.settings.mu_base, "planar": self.settings.planar,
             "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
@@ -210,7 +210,7 @@ def lp_guess(assembly, settings: Settings) -> float | None:
 def scaled(proto: TiltProtocol, settings: Settings, s: float) -> tuple[TiltProtocol, Settings]:
     """``proto`` run ``s`` times slower and ``settings`` recorded ``s`` times less often: an arch ``s^2``
     times larger runs the same dimensionless test. The time step stays: PyBullet's contacts are not
-    similar under a larger step (a 4 m ring at 3.3 x 0.5 ms collapsed 3 % below its LP)."""
+    similar under a larger step (a 4 m ring at 3.3 x 0.5 ms collapsed 4 % below its LP)."""
     if s != 1.0:
         settings = settings.with_(record_every=settings.record_every * s)
         proto = proto.slowed(s)

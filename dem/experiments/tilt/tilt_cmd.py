@@ -76,6 +76,9 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{label} ({args.config}, mu {args.mu_joint:g}/{args.mu_base:g}, {args.protocol}): "
               f"lambda = {res.lam:.4f} (theta = {res.theta_deg:.2f} deg), bracket [{res.bracket[0]:.4f}, "
               f"{res.bracket[1]:.4f}], {res.mode} [{hinges}], {res.n_sims} simulations, {res.wall_s:.1f} s -> {path}")
+        if (res.protocol.time_scale or 1.0) > 1.0:
+            print(f"  protocol {res.protocol.time_scale:.2f} x slower than at the catalogue's scale (a larger arch moves "
+                  "more slowly: docs/physics/dem.md#75-arches-larger-than-the-catalogue)")
         print(lp_check_line(res.lp_check))
     if res.lp_check is not None and res.lp_check.warning:
         print(f"archdem: warning: {res.lp_check.warning}", file=sys.stderr)
