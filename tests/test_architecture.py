@@ -265,3 +265,20 @@ def test_public_names_exist():
             missing += [f"{name}.{a}" for a in getattr(mod, "__all__", ()) if not hasattr(mod, a)]
     assert missing == []
     assert {"tilt", "shake", "threshold", "ground_motion", "Settings"} <= set(importlib.import_module("dem").__all__)
+
+
+# heavy libraries `archdem --help` must not load: each costs a second or more of start-up (trimesh alone
+# 0.45 s), and the help needs none of them
+HELP_FORBIDDEN = ("scipy", "trimesh", "h5py", "matplotlib", "pybullet", "mujoco", "ezdxf", "dask")
+
+
+@pytest.mark.slow
+def test_help_imports_no_heavy_library():
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom dem.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
+            f"print('HEAVY:' + ' '.join(sorted({{m.split('.')[0] for m in sys.modules}} & set({HELP_FORBIDDEN!r}))))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True).stdout
+    heavy = out.rsplit("HEAVY:", 1)[1].split()
+    assert heavy == [], f"archdem --help imports {', '.join(heavy)}"

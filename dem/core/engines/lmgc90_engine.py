@@ -46,7 +46,6 @@ from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
 from dem.core.settings import Settings
 from specimens.errors import ArchdemInputError
-from specimens.mesh import prism
 
 #: archdem (x, y up, z out of plane) -> LMGC90 (x, y, z up): a proper rotation, x_lmgc = M x_arch.
 M = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
@@ -113,6 +112,9 @@ def hull_assembly(assembly):
 
 def _polyhedron(poly: np.ndarray, width: float, z: float) -> tuple[np.ndarray, np.ndarray, float]:
     """Vertices (LMGC90 frame, on the 1 nm grid), triangles and volume of the prism of ``poly``."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from specimens.mesh import prism
+
     m = prism(poly, width)
     v = np.asarray(m.vertices, float).copy()
     v[:, 2] += z

@@ -46,7 +46,6 @@ from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
 from dem.core.settings import Settings
 from dem.core.ties import TieForces
-from specimens.mesh import prism
 
 
 @dataclass(frozen=True)
@@ -110,6 +109,9 @@ def largest_step(model: Model, settings: Settings, options: MuJoCoOptions) -> fl
 def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTIONS, driven_base: bool = False) -> str:
     """The MJCF text of ``model`` (bodies, convex mesh pieces, base, options); ``driven_base``:
     the base is a heavy body on an x slide joint named ``table``."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from specimens.mesh import prism
+
     o = options
     n_sub = substeps(settings.dt, largest_step(model, settings, o))
     h = settings.dt / n_sub
