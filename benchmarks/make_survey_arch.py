@@ -16,6 +16,8 @@ from pathlib import Path
 import ezdxf
 import numpy as np
 
+from specimens.arch_set import off_radial_joint
+
 RI, RE, E = 1400.0, 1700.0, 350.0  # intrados and extrados radii, centres' offset [mm]
 # joints of each half: polar angle about its centre [deg], turn off the radial [deg]
 LEFT = [(0.0, 0.0), (9.0, 3.0), (20.0, -4.0), (29.0, 2.0), (41.0, -3.0), (50.0, 4.0), (61.0, -2.0), (68.0, 3.0)]
@@ -27,17 +29,8 @@ RING_DEPTH, PIER_DEPTH = 450.0, 600.0
 
 
 def _joint(side: int, psi_deg: float, turn_deg: float) -> tuple[np.ndarray, np.ndarray]:
-    """Intrados and extrados ends of a joint of half ``side`` (-1 left, +1 right): through the intrados
-    point at ``psi``, along the radial turned by ``turn``, up to the extrados circle of the same centre."""
-    c = np.array([-side * E, 0.0])
-    psi = math.radians(psi_deg)
-    pi_ = c + RI * np.array([side * math.cos(psi), math.sin(psi)])
-    ang = psi + math.radians(turn_deg) * side
-    d = np.array([side * math.cos(ang), math.sin(ang)])
-    # |pi + s d - c| = RE
-    b = float(d @ (pi_ - c))
-    s = -b + math.sqrt(b * b - float((pi_ - c) @ (pi_ - c)) + RE * RE)
-    return pi_, pi_ + s * d
+    """Intrados and extrados ends of a joint of half ``side`` (-1 left, +1 right) of this ring."""
+    return off_radial_joint(side, psi_deg, turn_deg, RI, RE, E)
 
 
 def blocks() -> list[tuple[str, str, np.ndarray]]:

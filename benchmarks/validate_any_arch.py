@@ -29,9 +29,8 @@ def one(job: tuple[str, str, str]) -> dict:
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.limit_discrete import solve_lp
     from dem.core.settings import Settings
-    from dem.experiments.tilt.check import lp_check
+    from dem.experiments.tilt.check import lp_check, lp_slides, reference_lp
     from dem.experiments.tilt.run import tilt
-    from dem.experiments.tilt.check import reference_lp
     from specimens.arch_set import set_arch
     from specimens.errors import ArchdemInputError
 
@@ -42,7 +41,7 @@ def one(job: tuple[str, str, str]) -> dict:
     row = {"arch": name, "source": m.fmt or ("dxf (shipped)" if m.drawing == "survey" else "parameters"),
            "config": "" if m.drawn else m.config, "span_m": m.span, "t_over_Rp": m.thickness_ratio,
            "bodies": len(asm.bodies), "engine": engine, "lp_lambda": lp.lam,
-           "lp_sliding": any("sliding" in v for v in lp.joint_states.values()),
+           "lp_sliding": lp_slides(lp),
            "lp_lambda_no_sliding": solve_lp(asm, math.inf, math.inf).lam,
            "continuous_lambda": continuous_collapse(m.arch).lam if m.arch is not None else float("nan"),
            "lp_hinges": [f"{j} {f}" for j, f in lp.hinges]}

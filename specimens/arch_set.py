@@ -18,6 +18,7 @@ import numpy as np
 from specimens.blocks import Assembly, discretise
 from specimens.errors import ArchdemInputError
 from specimens.geometry import PointedArch
+from specimens.sections import signed_area
 
 #: Out-of-plane depth of every member [m] (the tilt's lambda does not depend on it).
 DEPTH = 0.1
@@ -81,6 +82,22 @@ def _ring_outlines(m: SetArch, shape: str) -> list[tuple[str, np.ndarray]]:
     return [(b.name, np.asarray(b.outline, float)) for b in asm.bodies]
 
 
+def off_radial_joint(side: int, psi_deg: float, turn_deg: float, Ri: float, Re: float, e: float
+                     ) -> tuple[np.ndarray, np.ndarray]:
+    """Intrados and extrados ends of a surveyed joint of half ``side`` (-1 left, +1 right) of a two-centred
+    ring (``Ri``, ``Re``, centres ``e`` off the axis): through the intrados point at polar angle ``psi``
+    about its centre, along the radial turned by ``turn`` [deg], up to the extrados circle."""
+    c = np.array([-side * e, 0.0])
+    psi = math.radians(psi_deg)
+    p_i = c + Ri * np.array([side * math.cos(psi), math.sin(psi)])
+    ang = psi + math.radians(turn_deg) * side
+    d = np.array([side * math.cos(ang), math.sin(ang)])
+    # |p_i + s d - c| = Re
+    b = float(d @ (p_i - c))
+    s = -b + math.sqrt(b * b - float((p_i - c) @ (p_i - c)) + Re * Re)
+    return p_i, p_i + s * d
+
+
 def _irregular_outlines() -> list[tuple[str, np.ndarray]]:
     """A pointed arch as surveyed: 7 voussoirs on the left and 5 on the right, of unequal sizes, their
     joints turned a few degrees off the radial (Ri 1.6 m, Re 1.9 m, centres 0.4 m off the axis)."""
@@ -90,16 +107,9 @@ def _irregular_outlines() -> list[tuple[str, np.ndarray]]:
     right = [(0.0, 0.0), (16.0, -3.0), (28.0, 2.0), (45.0, -4.0), (57.0, 3.0), (apex, None)]
 
     def joint(side: int, psi_deg: float, turn: float | None) -> tuple[np.ndarray, np.ndarray]:
-        c = np.array([-side * e, 0.0])
-        psi = math.radians(psi_deg)
-        p_i = c + Ri * np.array([side * math.cos(psi), math.sin(psi)])
         if turn is None:  # the crown joint: vertical, from the intrados apex up to the extrados
-            return p_i, np.array([0.0, math.sqrt(Re * Re - e * e)])
-        ang = psi + math.radians(turn) * side
-        d = np.array([side * math.cos(ang), math.sin(ang)])
-        b = float(d @ (p_i - c))
-        s = -b + math.sqrt(b * b - float((p_i - c) @ (p_i - c)) + Re * Re)
-        return p_i, p_i + s * d
+            return off_radial_joint(side, psi_deg, 0.0, Ri, Re, e)[0], np.array([0.0, math.sqrt(Re * Re - e * e)])
+        return off_radial_joint(side, psi_deg, turn, Ri, Re, e)
 
     out = []
     for side, tag, js in ((-1, "L", left), (1, "R", right)):
@@ -141,7 +151,7 @@ def _write_obj(outlines: list[tuple[str, np.ndarray]], path: Path) -> None:
     """Each block a prism ``DEPTH`` deep (z) with its outline as front and back faces; convex outlines only."""
     lines, nv = [], 0
     for name, q in outlines:
-        q = q if _area(q) > 0 else q[::-1]
+        q = q if signed_area(q) > 0 else q[::-1]
         n = len(q)
         lines.append(f"o {name}")
         for z in (-DEPTH / 2, DEPTH / 2):
@@ -152,11 +162,6 @@ def _write_obj(outlines: list[tuple[str, np.ndarray]], path: Path) -> None:
         lines += [f"f {f[k]} {f[(k + 1) % n]} {b[(k + 1) % n]} {b[k]}" for k in range(n)]
         nv += 2 * n
     path.write_text("\n".join(lines) + "\n")
-
-
-def _area(q: np.ndarray) -> float:
-    x, y = q[:, 0], q[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
 
 
 def _draw_ring(m: SetArch, path: Path, shape: str) -> None:
@@ -209,4 +214,4 @@ def set_arch(name: str) -> SetArch:
     raise ArchdemInputError(f"no arch {name!r} in the set; members: {', '.join(m.name for m in ARCH_SET)}")
 
 
-__all__ = ["ARCH_SET", "DEPTH", "SetArch", "set_arch"]
+__all__ = ["ARCH_SET", "DEPTH", "SetArch", "off_radial_joint", "set_arch"]

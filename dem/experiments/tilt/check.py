@@ -172,10 +172,14 @@ def _hinge_text(hinges) -> str:
     return " ".join(f"{j} {f}" for j, f in hinges)
 
 
+def lp_slides(lp) -> bool:
+    """True if the collapse mechanism of the LP ``lp`` slides at some joint (the associative LP is then no bound)."""
+    return any("sliding" in str(v) for v in lp.joint_states.values())
+
+
 def lp_check_of(row: TiltCheck, lp, law: str = "rigid") -> LpCheck:
     """The check of a tilt validation row (:func:`check`) against its LP ``lp`` (the one it was checked against)."""
-    slides = any("sliding" in str(v) for v in lp.joint_states.values())
-    return LpCheck(row.id, row.lam, row.lp_lam, row.lp_hinges, bool(slides), row.no_sliding, law, row.hinges)
+    return LpCheck(row.id, row.lam, row.lp_lam, row.lp_hinges, lp_slides(lp), row.no_sliding, law, row.hinges)
 
 
 def lp_check(result, assembly, lp=None) -> LpCheck | None:
@@ -185,7 +189,6 @@ def lp_check(result, assembly, lp=None) -> LpCheck | None:
         return None
     st = result.settings
     lp = reference_lp(assembly, st.mu_joint, st.mu_base) if lp is None else lp
-    slides = any("sliding" in str(v) for v in lp.joint_states.values())
     dem = tuple((j.joint, j.face) for j in result.joints if j.state in HINGE_STATES)
-    return LpCheck(str(result.label), float(result.lam), float(lp.lam), tuple(tuple(h) for h in lp.hinges), bool(slides),
+    return LpCheck(str(result.label), float(result.lam), float(lp.lam), tuple(tuple(h) for h in lp.hinges), lp_slides(lp),
                    prevents_sliding(st.mu_joint, st.mu_base), st.contact_law, dem)
