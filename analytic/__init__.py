@@ -21,6 +21,7 @@ _EXPORTS = {
     "GroundMotion": "analytic.motions.inputs", "PulseA": "analytic.motions.inputs", "PulseB": "analytic.motions.inputs", "SampledMotion": "analytic.motions.inputs", "SinePulse": "analytic.motions.inputs",
     "continuous_collapse": "analytic.limit.limit_continuous",
     "enumerate_mechanisms": "analytic.limit.limit_discrete", "solve_lp": "analytic.limit.limit_discrete",
+    "solve_non_associative": "analytic.limit.non_associative",
     "arch_four_bar": "analytic.rocking.linkage", "arch_two_bar": "analytic.rocking.linkage", "minimised_four_bar": "analytic.rocking.linkage", "minimised_layout": "analytic.rocking.linkage",
     "ground_motion": "analytic.motions.records", "read_record": "analytic.motions.records",
     "RockingBlock": "analytic.rocking.rocking_block",
@@ -32,6 +33,7 @@ __all__ = list(_EXPORTS)
 if TYPE_CHECKING:  # the same names for type checkers and editors
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
+    from analytic.limit.non_associative import solve_non_associative
     from analytic.limit.summary import analyse
     from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
     from analytic.motions.inputs import GroundMotion, PulseA, PulseB, SampledMotion, SinePulse

@@ -228,6 +228,35 @@ def _sparse(entries: dict[tuple[int, int], float], shape: tuple[int, int]):
     return csr_array((np.array([entries[k] for k in keys]), (rows, cols)), shape=shape)
 
 
+def equilibrium_entries(model: ContactModel, L: float, s: int) -> tuple[dict[tuple[int, int], float], np.ndarray]:
+    """The equilibrium equations of every body (rows ``3 body + (x, y, moment)``) as sparse entries over
+    the columns ``N`` (``2 j + k``), ``V`` (``2 nj + 2 j + k``) and ``lambda`` (``4 nj``), forces in units
+    of the total weight and lengths in ``L``; and their right-hand side (the weights)."""
+    nb, nj = len(model.mass), len(model.joint_names)
+    W = float(model.mass.sum())
+    il = 4 * nj
+    acc: dict[tuple[int, int], float] = {}
+    rhs = np.zeros(3 * nb)
+    c = model.centroid / L
+    for j in range(nj):
+        n = model.normal[j]
+        tvec = np.array([-n[1], n[0]])
+        for k, p in enumerate((model.p1[j] / L, model.p2[j] / L)):
+            for body, sgn in ((model.b[j], 1.0), (model.a[j], -1.0)):
+                if body < 0:
+                    continue
+                r = p - c[body]
+                for col, d in ((2 * j + k, n), (2 * nj + 2 * j + k, tvec)):
+                    for row, v in ((3 * body, sgn * d[0]), (3 * body + 1, sgn * d[1]),
+                                   (3 * body + 2, sgn * (r[0] * d[1] - r[1] * d[0]))):
+                        acc[row, col] = acc.get((row, col), 0.0) + v
+    for body in range(nb):
+        m = model.mass[body] / W
+        acc[3 * body, il] = s * m
+        rhs[3 * body + 1] = m
+    return acc, rhs
+
+
 def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: float | None = None,
                      tension: np.ndarray | None = None, ties: Sequence = ()) -> LPResult:
     """Maximise ``lambda`` for a :class:`ContactModel` (see :func:`solve_lp`); ``tension`` (n_joints, 2):
@@ -244,22 +273,8 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
     iN = lambda j, k: 2 * j + k  # noqa: E731
     iV = lambda j, k: 2 * nj + 2 * j + k  # noqa: E731
     il = 4 * nj
-    # sparse (an assembly of many blocks would not fit densely), summed in the dense order, zeros dropped
-    acc: dict[tuple[int, int], float] = {}
-    rhs = np.zeros(3 * nb)
+    acc, rhs = equilibrium_entries(model, L, s)
     c = model.centroid / L
-    for j in range(nj):
-        n = model.normal[j]
-        tvec = np.array([-n[1], n[0]])
-        for k, p in enumerate((model.p1[j] / L, model.p2[j] / L)):
-            for body, sgn in ((model.b[j], 1.0), (model.a[j], -1.0)):
-                if body < 0:
-                    continue
-                r = p - c[body]
-                for col, d in ((iN(j, k), n), (iV(j, k), tvec)):
-                    for row, v in ((3 * body, sgn * d[0]), (3 * body + 1, sgn * d[1]),
-                                   (3 * body + 2, sgn * (r[0] * d[1] - r[1] * d[0]))):
-                        acc[row, col] = acc.get((row, col), 0.0) + v
     for t, tie in enumerate(ties):
         u = tie.direction
         for body, p, sgn in ((tie.a, tie.p_a, 1.0), (tie.b, tie.p_b, -1.0)):
@@ -268,10 +283,6 @@ def solve_contact_lp(model: ContactModel, load_sign: int = 1, length_scale: floa
             for row, v in ((3 * body, sgn * u[0]), (3 * body + 1, sgn * u[1]),
                            (3 * body + 2, sgn * (r[0] * u[1] - r[1] * u[0]))):
                 acc[row, col] = acc.get((row, col), 0.0) + v
-    for body in range(nb):
-        m = model.mass[body] / W
-        acc[3 * body, il] = s * m
-        rhs[3 * body + 1] = m
     A = _sparse(acc, (3 * nb, nv))
     ub: dict[tuple[int, int], float] = {}
     n_ub = 0

@@ -10,12 +10,16 @@ from specimens.processes import die_with_parent
 
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
-            min_spacing: float = 0.0, disc_kw: dict | None = None, continuous=None) -> dict:
+            min_spacing: float = 0.0, disc_kw: dict | None = None, continuous=None,
+            non_associative: bool = False) -> dict:
     """All analytic multipliers of one arch as a JSON-ready dict. ``disc_kw``: the discretisation
     (:func:`specimens.blocks.discretise` keywords; its ``contact`` also applies to the continuous
     ring). ``continuous``: the arch's :func:`analytic.limit.limit_continuous.continuous_collapse` result
     at the same density, spacing, thickness and contact if the caller has it (e.g. the
-    ``"continuous"`` of a :func:`multiplier_series` row); solved here otherwise (about 1 s)."""
+    ``"continuous"`` of a :func:`multiplier_series` row); solved here otherwise (about 1 s).
+    ``non_associative``: also the least multiplier without dilatancy of the same blocks and frictions
+    (key ``"non_associative"``, :meth:`~analytic.limit.non_associative.NonAssociativeResult.to_dict`;
+    a mixed-integer program, about 1 s per catalogue arch)."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
@@ -24,7 +28,7 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     density = kw.get("density", 500.0)
     contact = float(kw.get("contact", 1.0))
     if kw.get("piers") is not None:
-        return _analyse_on_piers(arch, config, mu_joint, mu_base, kw)
+        return _analyse_on_piers(arch, config, mu_joint, mu_base, kw, non_associative)
     if continuous is not None:
         want = (float(effective_thickness), float(min_spacing), contact)
         have = (continuous.effective_thickness, continuous.min_spacing, continuous.contact)
@@ -40,7 +44,7 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
                                        effective_thickness=effective_thickness, contact=contact)
         caught_msgs = [str(w.message) for w in caught]
     asm = discretise(arch, config=config, **kw)
-    disc, stands = _discrete(asm, mu_joint, mu_base)
+    disc, stands = _discrete(asm, mu_joint, mu_base, non_associative)
     return {
         "arch": arch.describe(),
         "config": config, "mu_joint": mu_joint, "mu_base": mu_base,
@@ -60,8 +64,9 @@ def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickn
     }
 
 
-def _discrete(asm, mu_joint: float, mu_base: float) -> tuple[dict, bool]:
-    """The enumeration's and the LP's entries of :func:`analyse` for ``asm``, and whether both stand."""
+def _discrete(asm, mu_joint: float, mu_base: float, non_associative: bool = False) -> tuple[dict, bool]:
+    """The enumeration's and the LP's entries of :func:`analyse` for ``asm`` (and the non-associative
+    one's if asked), and whether both stand."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 
@@ -72,14 +77,26 @@ def _discrete(asm, mu_joint: float, mu_base: float) -> tuple[dict, bool]:
         "hinges_discrete": [{"joint": j, "face": f} for j, f in kin.hinges],
         "lambda_lp": lp.lam, "lp_status": lp.message,
         "joints_lp": {name: {"state": st, **lp.forces.get(name, {})} for name, st in lp.joint_states.items()},
+        **_non_associative(asm, mu_joint, mu_base, non_associative),
     }, bool(kin.stands and lp.stands)
+
+
+def _non_associative(asm, mu_joint: float, mu_base: float, wanted: bool) -> dict:
+    """``{"non_associative": ...}`` of ``asm`` when ``wanted``, else nothing."""
+    if not wanted:
+        return {}
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from analytic.limit.non_associative import solve_non_associative
+
+    return {"non_associative": solve_non_associative(asm, mu_joint, mu_base).to_dict()}
 
 
 #: Why an arch on piers has no two-bar multiplier (it models the ring on a rigid base).
 RING_ONLY = "the two-bar sliding model is of the ring on a rigid base"
 
 
-def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: dict) -> dict:
+def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: dict,
+                      non_associative: bool = False) -> dict:
     """:func:`analyse` of an arch on piers: hinges anywhere (the fine LP of
     :func:`analytic.limit.limit_piers.continuous_on_piers`), the discrete enumeration and the LP, hinges
     named by joint."""
@@ -87,7 +104,7 @@ def _analyse_on_piers(arch, config: str, mu_joint: float, mu_base: float, kw: di
     from analytic.limit.limit_piers import continuous_on_piers
 
     asm = discretise(arch, config=config, **kw)
-    disc, stands = _discrete(asm, mu_joint, mu_base)
+    disc, stands = _discrete(asm, mu_joint, mu_base, non_associative)
     for h in disc["hinges_discrete"]:
         h["in_pier"] = asm.joint(h["joint"]).in_pier
     cont = continuous_on_piers(arch, asm.piers, density=asm.density, contact=asm.contact)
@@ -113,13 +130,14 @@ ARCH_ONLY_ANALYSES = ("the continuous ring (and its --effective-thickness, --min
                       "the linkages of the continuous ring (rock and domain take --layout discrete)")
 
 
-def analyse_drawing(asm, mu_joint: float, mu_base: float) -> dict:
+def analyse_drawing(asm, mu_joint: float, mu_base: float, non_associative: bool = False) -> dict:
     """The limit analysis of a drawing's blocks (:class:`specimens.drawn.DrawnAssembly`, its contact
     applied) as a JSON-ready dict: the static LP at the frictions and without sliding (the LP with
     ``mu_joint`` infinite at ``mu_base`` too, the reference of the LP's mu*), each with its hinges (joint,
     face, the bodies the joint lies between; ``ground`` for a support) and the joints that slide or open;
     the four-hinge enumeration when the blocks form one chain. The arch-only entries are None
-    (:data:`ARCH_ONLY_ANALYSES`). ``stands``: without sliding, the blocks stand under their own weight."""
+    (:data:`ARCH_ONLY_ANALYSES`). ``stands``: without sliding, the blocks stand under their own weight.
+    ``non_associative``: also the non-associative multiplier at the frictions, as in :func:`analyse`."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 
@@ -155,6 +173,7 @@ def analyse_drawing(asm, mu_joint: float, mu_base: float) -> dict:
         "lambda_continuous": None, "hinges_continuous": [], "lambda_two_bar": None, "lambda_slide_two_bar": None,
         "mu_star": None, "not_applicable": list(ARCH_ONLY_ANALYSES),
         "stands": bool(ns.stands), "stands_at_friction": bool(lp.stands),
+        **_non_associative(asm, mu_joint, mu_base, non_associative),
     }
 
 

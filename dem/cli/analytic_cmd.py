@@ -1,5 +1,6 @@
 """``archdem analytic``: limit analysis of one arch (continuous, discrete, LP, two-bar) or figures; of a
-drawing's blocks (``--geometry``), the static LP with its hinges and mu*."""
+drawing's blocks (``--geometry``), the static LP with its hinges and mu*. ``--friction non-associative``
+adds the least multiplier with Coulomb friction without dilatancy."""
 from __future__ import annotations
 
 import argparse
@@ -22,6 +23,10 @@ from specimens.drawn import DrawnAssembly, gaps_text
 from specimens.errors import ArchdemInputError
 
 
+#: The choices of ``--friction``: the associative LP alone, or the non-associative collapse beside it.
+FRICTION_LAWS = ("associative", "non-associative")
+
+
 def register(sub) -> None:
     p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar; "
                                         "a drawing's static LP (--geometry)",
@@ -37,6 +42,11 @@ def register(sub) -> None:
                         f"(default {default_of(analyse, 'effective_thickness'):g})")
     p.add_argument("--min-spacing", type=float, default=default_of(analyse, "min_spacing"),
                    help=f"least hinge spacing [rad] (continuous; default {default_of(analyse, 'min_spacing'):g})")
+    # default None (the associative LP alone): a choice of what to solve, not a physical default
+    p.add_argument("--friction", choices=FRICTION_LAWS, default=None,
+                   help="associative (default): the LP's sliding joints dilate (an upper bound); "
+                        "non-associative: also the least multiplier without dilatancy at the same frictions "
+                        "(a mixed-integer program, about 1 s for a catalogue arch)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--plot", metavar="DIR", default=None,
                    help="write the catalogue / full-scale figures to DIR (no id needed)")
@@ -54,6 +64,45 @@ def _finite_mu(name: str, v: float | None, default: float) -> float:
 def _lam(v: float | None, fmt: str = ".4f") -> str:
     """A multiplier as printed: a number, or "-" where the analysis has none."""
     return "-" if v is None else format(v, fmt)
+
+
+def _no_nan(v: object) -> object:
+    """``v`` with every NaN float, nested in dicts and lists too, replaced by None (JSON null)."""
+    if isinstance(v, float) and math.isnan(v):
+        return None
+    if isinstance(v, dict):
+        return {k: _no_nan(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [_no_nan(x) for x in v]
+    return v
+
+
+def _json_ready(res: dict) -> dict:
+    """``res`` with NaN as None: its own floats and, nested, the non-associative entry's (the other
+    entries as before)."""
+    return {k: _no_nan(v) if k == "non_associative" or isinstance(v, float) else v for k, v in res.items()}
+
+
+def _non_associative_lines(na: dict, between: dict[str, list[str]] | None = None, width: int = 17) -> list[str]:
+    """The two lines of ``--friction non-associative``: the associative LP (the upper bound) and the
+    non-associative multiplier with its mechanism, how the search ended and its cost. ``between``: the
+    bodies each joint lies between (a drawing's), shown after the joint."""
+    def joint(k: str, what: str = "") -> str:
+        return f"{k}{' ' + what if what else ''}" + (f" ({'|'.join(between[k])})" if between and k in between else "")
+
+    lp, lam = na["lambda_associative"], na["lambda_non_associative"]
+    lines = [f"  {'LP (associative)':<{width}}lambda = {_lam(lp)}   (upper bound: sliding joints dilate)"]
+    if lam is None or not math.isfinite(lam):  # no mechanism found, or none can form
+        lines.append(f"  {'non-associative':<{width}}lambda = {_lam(lam)}   [{na['message']}; {na['seconds']:.1f} s]")
+        return lines
+    below = f"{100 * (1 - lam / lp):.2f} % below" if lp and math.isfinite(lp) else "below the LP"
+    mech = [", ".join(joint(h["joint"], h["face"] + ("+sliding" if h["sliding"] else "")) for h in na["hinges"]) or "-"]
+    for key in ("sliding", "open"):
+        if na[key]:
+            mech.append(f"{key}: {', '.join(joint(k) for k in na[key])}")
+    lines.append(f"  {'non-associative':<{width}}lambda = {_lam(lam)}   {below}; hinges: {'; '.join(mech)}   "
+                 f"[{na['message']}; {na['seconds']:.1f} s, {na['nodes']} nodes]")
+    return lines
 
 
 def run(args: argparse.Namespace) -> int:
@@ -81,9 +130,10 @@ def run(args: argparse.Namespace) -> int:
     if "piers" in disc_kw and (args.effective_thickness != 1.0 or args.min_spacing != 0.0):
         raise ArchdemInputError("--effective-thickness and --min-spacing apply to the ring on a rigid base; on piers "
                                 "use --contact")
-    res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.min_spacing, disc_kw)
+    res = analyse(arch, args.config, mu_j, mu_b, args.effective_thickness, args.min_spacing, disc_kw,
+                  non_associative=args.friction == "non-associative")
     res["id"] = label
-    res = {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}
+    res = _json_ready(res)
     if args.json:
         print_json(res)
         return 0
@@ -103,6 +153,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"  discrete     lambda = {_lam(res['lambda_discrete'])}   hinges: {hd}")
     act = ", ".join(f"{k} {v['state']}" for k, v in res["joints_lp"].items() if v["state"] != "closed")
     print(f"  LP (friction) lambda = {_lam(res['lambda_lp'])}   {act}   [{res['lp_status']}]")
+    if "non_associative" in res:
+        print("\n".join(_non_associative_lines(res["non_associative"])))
     if on_piers:
         print(f"  two-bar      ({res['two_bar_message']})")
     else:
@@ -133,14 +185,14 @@ def _run_drawing(args: argparse.Namespace, label: str, drawn: DrawnAssembly, mu_
     for dest in ("effective_thickness", "min_spacing"):
         option_used(args, dest, False, "it belongs to the continuous ring of a two-centred arch, not to a drawing")
     asm = discretise(drawn, **discretisation_kwargs(args, drawn))
-    res = analyse_drawing(asm, mu_j, mu_b)
+    res = analyse_drawing(asm, mu_j, mu_b, non_associative=args.friction == "non-associative")
     if not res["stands"]:  # no equilibrium even without sliding: the drawing, not an analysis, is at fault
         raise ArchdemInputError(asm.cannot_stand(label))
     # mu* as the friction map defines it: the least joint friction at which the LP reaches its value
     # with the joints not sliding (at the same base friction); none without joints between blocks
     inner = any(not j.is_base for j in asm.joints)
     res["mu_star_lp"] = lp_mu_star(asm, mu_b, res["lambda_no_joint_sliding"]) if inner else None
-    res = {"id": label, **{k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in res.items()}}
+    res = {"id": label, **_json_ready(res)}
     if args.json:
         print_json(res)
         return 0
@@ -156,6 +208,9 @@ def _run_drawing(args: argparse.Namespace, label: str, drawn: DrawnAssembly, mu_
               f"[{res['lp_status']}]")
     else:
         print(f"  LP (friction)    the blocks cannot stand under self-weight at these frictions [{res['lp_status']}]")
+    if "non_associative" in res and res["stands_at_friction"]:
+        between = {k: v["between"] for k, v in res["joints_lp"].items()}
+        print("\n".join(_non_associative_lines(res["non_associative"], between)))
     print(f"  LP (no sliding)  lambda = {_lam(res['lambda_no_sliding'])}   {_mechanism_text(res, 'no_sliding')}")
     ns, nsb = res["lambda_no_sliding"], res["lambda_no_joint_sliding"]
     if nsb is not None and ns is not None and not math.isclose(ns, nsb, rel_tol=1e-9):

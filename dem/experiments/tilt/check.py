@@ -192,3 +192,21 @@ def lp_check(result, assembly, lp=None) -> LpCheck | None:
     dem = tuple((j.joint, j.face) for j in result.joints if j.state in HINGE_STATES)
     return LpCheck(str(result.label), float(result.lam), float(lp.lam), tuple(tuple(h) for h in lp.hinges), lp_slides(lp),
                    prevents_sliding(st.mu_joint, st.mu_base), st.contact_law, dem)
+
+
+#: The non-associative mechanism's joint states in the DEM's words (both say how a joint moves).
+NA_JOINT_STATE = {"hinge-intrados": "hinge", "hinge-extrados": "hinge", "sliding": "slide",
+                  "hinge+sliding": "hinge+slide", "open": "open"}
+
+
+def na_joints(na) -> dict[str, str]:
+    """The moving joints of a non-associative collapse (:class:`analytic.limit.non_associative.NonAssociativeResult`),
+    each as the DEM names its motion (``hinge``, ``slide``, ``hinge+slide``, ``open``)."""
+    return {k: NA_JOINT_STATE[v] for k, v in na.joint_states.items() if v != "closed"}
+
+
+def same_mechanism(dem_joints: Iterable, na) -> bool:
+    """True if a tilt's moving joints (``(joint, state)`` pairs, or objects with ``.joint`` and ``.state``)
+    are those of the non-associative collapse ``na``, each moving the same way."""
+    pairs = (x if isinstance(x, (tuple, list)) else (x.joint, x.state) for x in dem_joints)
+    return {j: st for j, st in pairs if st != "closed"} == na_joints(na)

@@ -212,8 +212,13 @@ def test_catalogue_table_and_heaviest_specimen(campaign):
 def test_analytic_table_matches_the_limit_analysis_called_directly(campaign):
     from analytic.limit.two_bar import lambda_two_bar
 
+    from analytic.limit.non_associative import solve_non_associative
+
     rows = {r["id"]: r for r in _rows(campaign["out"], "analytic")}
     assert list(rows) == SPECIMENS.split(",")
+    cols = list(next(iter(rows.values())))
+    i = cols.index("lambda_lp_reference_friction")
+    assert cols[i + 1:i + 3] == ["lambda_non_associative", "non_associative_below_lp_pct"]
     for s in campaign["specimens"]:
         r, glued = rows[s.id], discretise(s.arch, config="glued")
         assert float(r["lambda_lp_reference_friction"]) == pytest.approx(
@@ -222,6 +227,11 @@ def test_analytic_table_matches_the_limit_analysis_called_directly(campaign):
         assert float(r["lambda_discrete_free"]) == pytest.approx(
             enumerate_mechanisms(discretise(s.arch, config="free")).lam, rel=1e-9)
         assert float(r["lambda_two_bar"]) == pytest.approx(lambda_two_bar(s.arch), rel=1e-9)
+        # without dilatancy: beside the LP, at most it, and the library's on the same blocks
+        lp, na = float(r["lambda_lp_reference_friction"]), float(r["lambda_non_associative"])
+        assert 0 < na <= lp * (1 + 1e-9)
+        assert na == pytest.approx(solve_non_associative(glued, REFERENCE_MU_JOINT, REFERENCE_MU_BASE).lam, rel=1e-9)
+        assert float(r["non_associative_below_lp_pct"]) == pytest.approx(100 * (1 - na / lp), rel=1e-9, abs=1e-9)
         # a thinner ring is weaker
         assert 0 < float(r["lambda_continuous_80pct"]) < float(r["lambda_continuous"])
 
@@ -239,8 +249,12 @@ def test_analytic_findings_agree_with_the_table(campaign):
         "thin": r"An 80 % effective thickness lowers the continuous lambda by (\d+)-(\d+) %\.",
         "lp": r"At the reference friction \(([\d.]+)/([\d.]+)\) the associative LP has sliding joints in "
               r"(\d+) specimens(?:: (.+))?\.",
+        "na": r"Without dilatancy \(Coulomb friction, non-associative\) the collapse multiplier (?:is ([\d.]+)–([\d.]+) % "
+              r"below the associative LP \(largest: (\S+)\)|equals the associative LP \(to 0\.005 %\) for (\d+) of (\d+) "
+              r"specimens); mixed-integer program proven optimal for (\d+) of (\d+) specimens, ([\d.]+) s per specimen "
+              r"\(at most ([\d.]+) s\)\.",
     })
-    assert set(m) == {"gap", "sd", "base", "thin", "lp"}
+    assert set(m) == {"gap", "sd", "base", "thin", "lp", "na"}
     gap = 100 * (ld - lc) / ld
     assert (int(m["gap"][1]), int(m["gap"][2])) == (int(np.sum(lc <= ld)), n)
     assert _quotes(m["gap"][3], gap.max(), 1) and m["gap"][4] == rows[int(gap.argmax())]["id"]
@@ -259,6 +273,29 @@ def test_analytic_findings_agree_with_the_table(campaign):
     sliding = [r["id"] for r in rows if r["lp_sliding_joints"]]
     assert (float(m["lp"][1]), float(m["lp"][2])) == (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)
     assert int(m["lp"][3]) == len(sliding) and (m["lp"][4] or "") == ", ".join(sliding)
+    below = np.array([_f(r["non_associative_below_lp_pct"]) for r in rows])
+    if m["na"][1] is not None:  # a range, its largest named
+        assert _quotes(m["na"][1], below.min(), 2) and _quotes(m["na"][2], below.max(), 2)
+        assert m["na"][3] == rows[int(below.argmax())]["id"]
+    else:  # all equal to the LP to the digits quoted
+        assert np.all(np.abs(below) < 0.005) and (int(m["na"][4]), int(m["na"][5])) == (n, n)
+    assert (int(m["na"][6]), int(m["na"][7])) == (n, n)  # each of these three proven optimal
+    assert 0 <= float(m["na"][8]) <= float(m["na"][9]) < 60  # the cost is stated, under the time limit
+
+
+def test_analytic_non_associative_finding_names_the_range_the_largest_and_what_is_unproven():
+    from dem.campaign.step_analytic import _non_associative_finding
+
+    rows = [{"id": "A", "non_associative_below_lp_pct": -1e-12}, {"id": "B", "non_associative_below_lp_pct": 2.1349},
+            {"id": "C", "non_associative_below_lp_pct": math.nan}]
+    cost = {"A": (True, 1.0), "B": (False, 3.0), "C": (False, 0.2)}
+    assert _non_associative_finding(rows, cost) == (
+        "Without dilatancy (Coulomb friction, non-associative) the collapse multiplier is 0.00–2.13 % below the "
+        "associative LP (largest: B), none for C; mixed-integer program proven optimal for 1 of 3 specimens "
+        "(not proven, their multiplier an upper bound: B), 1.4 s per specimen (at most 3.0 s).")
+    same = [{"id": k, "non_associative_below_lp_pct": v} for k, v in (("A", 0.0), ("B", 0.004))]
+    assert "equals the associative LP (to 0.005 %) for 2 of 2 specimens; mixed-integer program proven optimal for 2 of 2" \
+        in _non_associative_finding(same, {"A": (True, 1.0), "B": (True, 1.0)})
 
 
 # ----------------------------------------------------------------------------- tilt

@@ -57,6 +57,24 @@ def test_the_shipped_drawing_s_json_is_the_library_s(capsys):
     assert "glued" not in json.dumps(d)
 
 
+@pytest.mark.slow
+def test_the_shipped_drawing_without_dilatancy_collapses_as_the_lp(capsys):
+    """The shipped drawing's LP collapse does not slide: without dilatancy the multiplier and hinges are the LP's."""
+    argv = ["analytic", "--geometry", str(EXAMPLE_DRAWING), "--friction", "non-associative"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    hinges = "J5 intrados (V1|V2), J10 extrados (V6|V7), J15 intrados (V10|V11), J23 extrados (RP1|ground)"
+    assert "  LP (associative) lambda = 0.2792   (upper bound: sliding joints dilate)" in out
+    assert f"  non-associative  lambda = 0.2792   0.00 % below; hinges: {hinges}   [optimal (proven" in out
+    d = _json(capsys, argv)
+    na = d["non_associative"]
+    assert na["lambda_associative"] == pytest.approx(d["lambda_lp"], rel=1e-9)
+    assert na["lambda_non_associative"] <= d["lambda_lp"] * (1 + 1e-9)
+    assert na["lambda_non_associative"] == pytest.approx(d["lambda_lp"], rel=1e-6) and na["optimal"] is True
+    assert [(h["joint"], h["face"]) for h in na["hinges"]] == [(h["joint"], h["face"]) for h in d["hinges_lp"]]
+    assert "non_associative" not in _json(capsys, argv[:-2])
+
+
 def test_a_generated_stack_rocks_above_its_mu_star_and_slides_below(tmp_path, capsys):
     """Two blocks 200 x 400 mm stacked on the ground: the stack rocks about its foot at b/h = 0.25; below
     mu 0.25 the top block slides first (lambda = mu): mu* = 0.25."""
