@@ -1,11 +1,13 @@
 """Figures of a friction map (:class:`dem.experiments.friction_map.run.MapResult`). Plotting only; no physics here.
 
 * ``threshold_map.png`` — mu* against Sd, one colour per Sh: DEM (solid, markers with the
-  bisection bracket as error bar), LP (dotted), two-bar (dashed); sliding below, rocking above.
+  bisection bracket as error bar), LP (dotted), LP without dilatancy (dash-dot), two-bar (dashed);
+  sliding below, rocking above.
 * ``lambda_mu_<id>.png`` — lambda(mu) of one specimen: DEM points coloured by mode over the LP
-  curve, the two-bar lambda_slide(mu) and the no-sliding multiplier; mu* marks.
+  curve, the non-associative one (no dilatancy, on the map's grid), the two-bar lambda_slide(mu) and
+  the no-sliding multiplier; mu* marks.
 * ``mode_grid.png`` — Sh x Sd grid, each cell coloured by the DEM mode at the reference friction
-  (grid value nearest to ``REFERENCE_MU_JOINT``), annotated with mu* (DEM / LP / two-bar).
+  (grid value nearest to ``REFERENCE_MU_JOINT``), annotated with mu* (DEM / LP / no dilatancy / two-bar).
 """
 from __future__ import annotations
 
@@ -29,7 +31,7 @@ def _val(x):
 
 
 def plot_threshold_map(result, ax=None):
-    """mu* against Sd, one colour per Sh (DEM, LP, two-bar)."""
+    """mu* against Sd, one colour per Sh (DEM, LP, LP without dilatancy, two-bar)."""
     if ax is None:
         ax = Figure(figsize=(7, 5)).subplots()
     by_sh: dict = {}
@@ -45,10 +47,13 @@ def plot_threshold_map(result, ax=None):
         lo = np.array([_val(s.threshold.lo) for s in ss])
         hi = np.array([_val(s.threshold.hi) for s in ss])
         lp = np.array([_val(s.analytic.mu_star_lp) for s in ss])
+        na = np.array([_val(s.analytic.mu_star_na) for s in ss])
         tb = np.array([_val(s.analytic.mu_star_two_bar) for s in ss])
         ax.errorbar(sd, dem, yerr=[dem - lo, hi - dem], color=c, marker="o", ls="-", capsize=3,
                     label=f"Sh = {sh:g}: DEM")
         ax.plot(sd, lp, color=c, ls=":", marker="s", mfc="none", label=f"Sh = {sh:g}: LP")
+        if np.isfinite(na).any():
+            ax.plot(sd, na, color=c, ls="-.", marker="x", label=f"Sh = {sh:g}: LP, no dilatancy")
         ax.plot(sd, tb, color=c, ls="--", marker="^", mfc="none", label=f"Sh = {sh:g}: two-bar")
         # open brackets: all rocking (mu* <= lowest mu) / all sliding (mu* > highest mu)
         for s in ss:
@@ -58,7 +63,7 @@ def plot_threshold_map(result, ax=None):
             elif s.threshold.status == "all_sliding":
                 ax.annotate("", (s.arch.Sd, s.threshold.lo + 0.08), (s.arch.Sd, s.threshold.lo),
                             arrowprops={"arrowstyle": "->", "color": c})
-        top = max([top] + [v for v in np.r_[dem, lp, tb, hi] if np.isfinite(v)])
+        top = max([top] + [v for v in np.r_[dem, lp, na, tb, hi] if np.isfinite(v)])
     ax.set_xlabel("slenderness Sd = t / (2 Rc)")
     ax.set_ylabel("threshold friction mu*")
     ax.text(0.02, 0.03, "sliding below", transform=ax.transAxes, color="tab:blue")
@@ -76,6 +81,8 @@ def plot_lambda_mu(smap, ax=None):
         ax = Figure(figsize=(7, 4.5)).subplots()
     a = smap.analytic
     ax.plot(a.mu, a.lam_lp, "k-", lw=1.2, label="LP (associative)")
+    if len(a.lam_na):  # on the map's grid only: about 1 s a value
+        ax.plot(a.mu_na, a.lam_na, "-.", color="tab:brown", marker=".", lw=1, label="LP, no dilatancy")
     ax.plot(a.mu, a.lam_two_bar, "k--", lw=1, label="two-bar lambda_slide")
     ax.axhline(a.lam_no_sliding, color="0.4", ls=":", label="no sliding (LP, mu_joint = inf)")
     for mode in MODE_COLOURS:
@@ -85,10 +92,12 @@ def plot_lambda_mu(smap, ax=None):
         y = [p.lam if np.isfinite(p.lam) else 0.0 for p in pts]
         ax.scatter([p.mu for p in pts], y, c=MODE_COLOURS[mode], marker="x" if mode == "failed" else "o",
                    s=[40 if p.kind == "grid" else 20 for p in pts], zorder=3, label=f"DEM {mode}")
-    for v, ls, lab in ((smap.mu_star_dem, "-", "mu* DEM"), (a.mu_star_lp, ":", "mu* LP"),
-                       (a.mu_star_two_bar, "--", "mu* two-bar")):
+    for v, ls, colour, lab in ((smap.mu_star_dem, "-", "tab:orange", "mu* DEM"),
+                               (a.mu_star_lp, ":", "tab:orange", "mu* LP"),
+                               (a.mu_star_na, "-.", "tab:brown", "mu* LP, no dilatancy"),
+                               (a.mu_star_two_bar, "--", "tab:orange", "mu* two-bar")):
         if v is not None and a.mu[0] <= v <= a.mu[-1]:
-            ax.axvline(v, color="tab:orange", ls=ls, lw=1, label=lab)
+            ax.axvline(v, color=colour, ls=ls, lw=1, label=lab)
     ax.set_xlabel("joint friction mu")
     ax.set_ylabel("collapse multiplier lambda")
     ax.set_ylim(0, 1.25 * max(a.lam_no_sliding, np.nanmax([p.lam for p in smap.points] + [0.1])))
@@ -117,15 +126,15 @@ def plot_mode_grid(result, mu_ref: float | None = None, ax=None):
         def f(v):
             return "-" if v is None else f"{v:.2f}"
 
-        ax.text(j, i, f"{mode}\nDEM {f(s.mu_star_dem)}\nLP {f(s.analytic.mu_star_lp)}\n2bar {f(s.analytic.mu_star_two_bar)}",
-                ha="center", va="center", fontsize=7)
+        ax.text(j, i, f"{mode}\nDEM {f(s.mu_star_dem)}\nLP {f(s.analytic.mu_star_lp)}\nNA {f(s.analytic.mu_star_na)}\n"
+                f"2bar {f(s.analytic.mu_star_two_bar)}", ha="center", va="center", fontsize=7)
     ax.set_xticks(range(len(sds)), [f"{v:g}" for v in sds])
     ax.set_yticks(range(len(shs)), [f"{v:g}" for v in shs])
     ax.set_xlim(-0.5, len(sds) - 0.5)
     ax.set_ylim(-0.5, len(shs) - 0.5)
     ax.set_xlabel("Sd")
     ax.set_ylabel("Sh")
-    ax.set_title(f"DEM mode at mu = {mu:g} (cells: mu* DEM / LP / two-bar)")
+    ax.set_title(f"DEM mode at mu = {mu:g} (cells: mu* DEM / LP / no dilatancy / two-bar)")
     return ax
 
 

@@ -96,14 +96,14 @@ def _run(args: argparse.Namespace) -> int:
 
     print(f"friction map ({args.config}, mu_base {args.mu_base:g}, {len(mus)} friction values, "
           f"{res.rounds} bisection rounds): {res.n_cases} tilts, {res.n_failed} failed, {res.wall_s:.0f} s -> {path}")
-    print(f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP  mu*2bar  lambda_ns  status")
+    print(f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP   mu*NA  mu*2bar  lambda_ns  status")
     for s in res.specimens:
         th = s.threshold
         br = f"[{f(th.lo)},{f(th.hi)}]"
         sh, sd = ("    -", "    -") if s.drawn else (f"{s.arch.Sh:5.2f}", f"{s.arch.Sd:5.2f}")
         print(f"{s.id:<22} {sh} {sd}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
-              f"{f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  {th.status}"
-              f"{'' if th.monotonic else ' (non-monotonic)'}")
+              f"{f(s.analytic.mu_star_na)}  {f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  "
+              f"{th.status}{'' if th.monotonic else ' (non-monotonic)'}")
     return 0
 
 

@@ -26,6 +26,12 @@ Definitions (recorded with every result):
   does not slide). ``mu*_LP`` = the least ``mu`` with ``lambda_LP(mu) >= (1 - 1e-6) lambda_no_sliding``,
   found by bisection (to ``1e-4``). Below it the LP mechanism has a joint that slides (checked:
   the LP joint states just below and just above ``mu*_LP`` are stored).
+* **Non-associative mu\\***: the same definition, tolerances and bisection with the least collapse
+  multiplier of Coulomb friction without dilatancy
+  (:func:`analytic.limit.non_associative.solve_non_associative`, a mixed-integer program; its value is
+  ``<=`` the LP's, so it is short of ``lambda_no_sliding`` wherever the LP is and its mu* is ``>=``
+  mu*_LP: the bisection starts from the LP's final bracket, its upper end doubled while short). Its
+  lambda(mu) is computed on the map's grid only: about 1 s a friction value for a catalogue arch.
 * **Two-bar mu\\***: :func:`analytic.limit.two_bar.mu_star` with the rocking multiplier of the
   *discrete* arch (kinematic enumeration, the arch the DEM simulates); the value against the
   continuous-profile multiplier is stored too (``mu_star_two_bar_continuous``).
@@ -164,7 +170,9 @@ class AnalyticCurves:
     ``lam_kinematic``: discrete four-hinge enumeration (no sliding anywhere); ``lam_continuous``:
     continuous-profile four-hinge multiplier; ``lam_two_bar_0``: frictionless two-bar;
     ``mu_star_lp``, ``mu_star_two_bar`` (against ``lam_kinematic``), ``mu_star_two_bar_continuous``;
-    ``lp_states_below`` / ``lp_states_above``: LP joint states (non-closed) just below/above ``mu_star_lp``.
+    ``lp_states_below`` / ``lp_states_above``: LP joint states (non-closed) just below/above ``mu_star_lp``;
+    ``mu_star_na``: mu* without dilatancy (non-associative); ``mu_na`` / ``lam_na``: its lambda(mu), on
+    the map's grid (empty when not computed); ``seconds_na``: wall time of these two [s].
     """
 
     mu: np.ndarray
@@ -179,38 +187,60 @@ class AnalyticCurves:
     mu_star_two_bar_continuous: float | None
     lp_states_below: dict = field(default_factory=dict)
     lp_states_above: dict = field(default_factory=dict)
+    mu_star_na: float | None = None
+    mu_na: np.ndarray = field(default_factory=lambda: np.empty(0))
+    lam_na: np.ndarray = field(default_factory=lambda: np.empty(0))
+    seconds_na: float = 0.0
 
 
 def _finite_or_none(x: float) -> float | None:
     return float(x) if x is not None and math.isfinite(x) else None
 
 
-def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0) -> float | None:
-    """Least joint friction at which the LP multiplier reaches ``lam_ns`` (module docstring)."""
+def lp_mu_star(assembly, mu_base: float, lam_ns: float, mu_max: float = 10.0, associative: bool = True) -> float | None:
+    """Least joint friction at which the limit-analysis multiplier reaches ``lam_ns`` (module docstring):
+    of the associative LP (``associative``), or of Coulomb friction without dilatancy
+    (:func:`analytic.limit.non_associative.solve_non_associative`, about 1 s a friction; searched from the
+    LP's bracket up). None: still short of it at ``mu_max``; 0: reached at any friction."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_discrete import solve_lp
+    from analytic.limit.non_associative import solve_non_associative
 
-    def full(mu: float) -> bool:
-        return solve_lp(assembly, mu, mu_base).lam >= (1 - LP_REL_TOL) * lam_ns
+    def reaches(solve) -> Callable[[float], bool]:
+        return lambda mu: solve(assembly, mu, mu_base).lam >= (1 - LP_REL_TOL) * lam_ns
 
+    full = reaches(solve_lp)
     if not math.isfinite(lam_ns) or not full(mu_max):
-        return None
-    if full(1e-6):
+        return None  # without dilatancy the multiplier is at most the LP's: short of lam_ns too
+    lp = None if full(1e-6) else search(full, 0.0, mu_max, LP_MU_TOL, rule="width", lo_run=False, hi_run=True)
+    if associative:
+        return 0.0 if lp is None else lp.hi
+    full = reaches(solve_non_associative)
+    if lp is None and full(1e-6):
         return 0.0
-    return search(full, 0.0, mu_max, LP_MU_TOL, rule="width", lo_run=False, hi_run=True).hi
+    # short wherever the LP is (at most its multiplier), so from the LP's bracket; its upper end is a guess,
+    # doubled up to mu_max while short: one solve where the two thresholds meet, not twenty
+    lo, hi = (lp.lo, lp.hi) if lp is not None else (0.0, mu_max)
+    na = search(full, lo, hi, LP_MU_TOL, rule="width", lo_run=False, limit=mu_max,
+                up=lambda m: min(2 * m, mu_max) if m < mu_max else math.inf)
+    return na.hi if na.bracketed else None
 
 
 def analytic_curves(arch: PointedArch | DrawnAssembly, config: str, mu_base: float, mus: Sequence[float],
-                    n_voussoirs: int = 8, contact: float = 1.0, piers=None) -> AnalyticCurves:
+                    n_voussoirs: int = 8, contact: float = 1.0, piers=None, non_associative: bool = True,
+                    mus_na: Sequence[float] | None = None) -> AnalyticCurves:
     """LP, two-bar and no-sliding references of ``arch`` on the friction values ``mus``; the LP,
     enumeration and continuous ones at effective ``contact`` (the two-bar model has none: full joints).
     On ``piers`` the continuous one has hinges anywhere along ring and piers, and the two-bar ones
     (a ring on a rigid base) are NaN. A drawing's blocks have the LP curves only (and the four-hinge
-    enumeration when they form one chain): the continuous ring and the two-bar need an arch."""
+    enumeration when they form one chain): the continuous ring and the two-bar need an arch.
+    ``non_associative``: also mu* and lambda(mu) without dilatancy, the curve on ``mus_na`` (default
+    ``mus``, empty: none; about 1 s a value, so the map gives its grid, not the dense ``mus``)."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
     from analytic.limit.limit_piers import continuous_on_piers
+    from analytic.limit.non_associative import solve_non_associative
     from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star
 
     drawn = isinstance(arch, DrawnAssembly)
@@ -236,7 +266,15 @@ def analytic_curves(arch: PointedArch | DrawnAssembly, config: str, mu_base: flo
         def states(m):
             return {k: v for k, v in solve_lp(asm, m, mu_base).joint_states.items() if v != "closed"}
         below, above = states(max(ms_lp - 5 * LP_MU_TOL, 1e-6)), states(ms_lp + 5 * LP_MU_TOL)
-    return AnalyticCurves(mu, lam_lp, lam_tb, lam_ns, lam_k, lam_c, lam_tb0, ms_lp, ms_tb, ms_tbc, below, above)
+    ms_na, mu_na, lam_na, t_na = None, np.empty(0), np.empty(0), 0.0
+    if non_associative:
+        t0 = time.perf_counter()
+        ms_na = lp_mu_star(asm, mu_base, lam_ns, associative=False)
+        mu_na = np.asarray(sorted(set(float(m) for m in (mus if mus_na is None else mus_na))), dtype=float)
+        lam_na = np.array([solve_non_associative(asm, m, mu_base).lam for m in mu_na])
+        t_na = time.perf_counter() - t0
+    return AnalyticCurves(mu, lam_lp, lam_tb, lam_ns, lam_k, lam_c, lam_tb0, ms_lp, ms_tb, ms_tbc, below, above,
+                          ms_na, mu_na, lam_na, t_na)
 
 
 # ----------------------------------------------------------------------------- results
@@ -292,7 +330,7 @@ class SpecimenMap:
             "mu_star_dem": self.mu_star_dem, "mu_star_dem_bracket": [th.lo, th.hi], "mu_star_dem_status": th.status,
             "mu_star_dem_monotonic": th.monotonic,
             "mu_star_two_bar": a.mu_star_two_bar, "mu_star_two_bar_continuous": a.mu_star_two_bar_continuous,
-            "mu_star_lp": a.mu_star_lp,
+            "mu_star_lp": a.mu_star_lp, "mu_star_na": a.mu_star_na,
             "lambda_no_sliding": a.lam_no_sliding, "lambda_kinematic": a.lam_kinematic,
             "lambda_two_bar_frictionless": a.lam_two_bar_0,
             "points": [{"mu": p.mu, "lambda": _finite_or_none(p.lam), "mode": p.mode, "kind": p.kind,
@@ -331,10 +369,11 @@ class MapResult:
                     "config": s.config, "mu_base": s.mu_base,
                     "mu_star_dem": s.mu_star_dem, "mu_star_dem_lo": th.lo, "mu_star_dem_hi": th.hi,
                     "dem_status": th.status, "dem_monotonic": th.monotonic,
-                    "mu_star_lp": a.mu_star_lp, "mu_star_two_bar": a.mu_star_two_bar,
+                    "mu_star_lp": a.mu_star_lp, "mu_star_na": a.mu_star_na, "mu_star_two_bar": a.mu_star_two_bar,
                     "mu_star_two_bar_continuous": a.mu_star_two_bar_continuous,
                     "lambda_no_sliding": a.lam_no_sliding, "lambda_kinematic": a.lam_kinematic,
                     "lambda_continuous": a.lam_continuous, "lambda_two_bar_frictionless": a.lam_two_bar_0,
+                    "seconds_na": round(a.seconds_na, 1),
                     "n_tilts": len(s.points), "n_failed": sum(p.mode == "failed" for p in s.points),
                 })
             return rows
@@ -373,7 +412,8 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
                   protocol: dict | None = None, settings: dict | None = None, func: Callable[[dict], dict] = DEM_CASE,
                   n_voussoirs: int = DEFAULT_VOUSSOIRS, time_scale: float | str = "auto", extra: dict | None = None,
                   contact: float | Mapping[str, float] = 1.0, piers=None,
-                  law: Mapping[str, dict] | None = None, definition: dict | None = None) -> MapResult:
+                  law: Mapping[str, dict] | None = None, definition: dict | None = None,
+                  non_associative: bool = True) -> MapResult:
     """Friction map of ``specimens`` (Specimen objects with ``.id`` / ``.arch``, ids, or ``"all"``).
 
     Round 0 runs the grid ``mus`` for every specimen; rounds 1..``refine`` bisect each
@@ -387,7 +427,9 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     or specimen id -> contact; ``piers``: every specimen stands on these
     :class:`~specimens.piers.Piers` (the same sizes for all); ``law``: specimen id -> the contact-law
     settings of its joints (``dem.core.contact.study_joints``), merged into ``settings``; ``definition``:
-    the command line's options, stored with a new study (``dem.studies.sweep.stored_definition``).
+    the command line's options, stored with a new study (``dem.studies.sweep.stored_definition``);
+    ``non_associative``: also the references without dilatancy (mu* and lambda on the grid, about 1 s a grid
+    value for a catalogue arch: :func:`analytic_curves`).
     Raises :class:`ArchdemInputError`, :class:`dem.studies.sweep.StudyInterrupted`, ``KeyboardInterrupt``.
     """
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
@@ -473,7 +515,7 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
         curve_mus = sorted(set(grid) | set(np.round(np.linspace(min(grid), max(grid), 49), 9).tolist()))
         smaps.append(SpecimenMap(s.id, s.arch, config, float(mu_base), pts, th,
                                  analytic_curves(s.arch, config, mu_base, curve_mus, n_voussoirs, contact_of[s.id],
-                                                 piers)))
+                                                 piers, non_associative, grid)))
     recs = [by_key[case_key(c)] for c in all_cases if case_key(c) in by_key]
     return MapResult(Path(out_path), config, float(mu_base), grid, smaps, len(recs), sum(not r.ok for r in recs),
                      time.perf_counter() - t0, [r.wall for r in recs if r.ok], rounds, definitions())
@@ -487,6 +529,8 @@ def definitions() -> dict:
                        "rocks] after bisection (first switch from sliding to rocking as mu rises)",
         "mu_star_lp": f"least mu_joint with lambda_LP >= (1 - {LP_REL_TOL:g}) lambda_LP(mu_joint = inf), "
                       f"bisection to {LP_MU_TOL:g}",
+        "mu_star_na": "as mu_star_lp, with the least collapse multiplier of Coulomb friction without dilatancy "
+                      "(non-associative, mixed-integer program) in place of the associative LP's",
         "mu_star_two_bar": "two-bar lambda_slide(mu) = discrete kinematic (no-sliding) multiplier",
         "time_scale": f"protocol times, dt and record interval x sqrt(Rc / {RC_REF} m) above the catalogue scale",
         "map_tilt_tol": MAP_TILT_TOL,

@@ -447,9 +447,20 @@ def test_map_findings_agree_with_the_table(campaign):
         "sd": r"Sh = ([\d.]+): DEM mu\* (grows|does not grow monotonically) with Sd \((.+)\)\.",
         "all_rocking": r"Rocking already at the lowest friction of the grid: (.+)\.",
         "all_sliding": r"Still sliding at the highest friction of the grid: (.+)\.",
+        "na_dem": r"The non-associative mu\* \(limit analysis without dilatancy\) is below the DEM mu\* for (\d+) of (\d+) "
+                  r"specimens where both exist \(mean difference DEM - no dilatancy ([-+][\d.]+); DEM / no dilatancy: (.+)\)\.",
+        "na_lp": r"Without dilatancy mu\* equals the associative LP's \(to the bisection tolerance ([\d.e-]+)\) for (\d+) of "
+                 r"(\d+) specimens(?:; it is above it by up to ([\d.]+) for the others)?\.",
+        "na_cost": r"The references without dilatancy \(mu\* and lambda on the grid\) took (\d+) s of the step's (\d+) s "
+                   r"\((\d+)%; (\d+) s a specimen\)(: a large share of this quick run)?\.",
     })
     br = [r for r in rows if r["dem_status"] == "bracketed"]
-    assert br and set(m) == {"bracketed", "two_bar", "all_sliding"}  # one bracketed specimen: no Sd trend
+    assert br and set(m) == {"bracketed", "two_bar", "all_sliding", "na_dem", "na_lp", "na_cost"}  # one bracketed: no Sd trend
+    both = [r for r in rows if r["mu_star_dem"] != "" and r["mu_star_na"] != ""]
+    d_na = [float(r["mu_star_dem"]) - float(r["mu_star_na"]) for r in both]
+    assert (int(m["na_dem"][1]), int(m["na_dem"][2])) == (sum(d > 0 for d in d_na), len(both))
+    assert _quotes(m["na_dem"][3], np.mean(d_na), 2)
+    assert int(m["na_lp"][3]) == sum(r["mu_star_na"] != "" for r in rows) or int(m["na_lp"][3]) == len(rows)
     assert (int(m["bracketed"][1]), int(m["bracketed"][2])) == (len(br), len(rows))
     quoted = [v.rsplit(" ", 1) for v in m["bracketed"][3].split(", ")]
     assert [q[0] for q in quoted] == [r["id"] for r in br]

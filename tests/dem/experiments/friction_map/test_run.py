@@ -25,6 +25,7 @@ def _syn(mu_star=0.537, lam_rock=0.3, **hooks):
 
 def _map(tmp_path, name="m.h5", specimens=("Sh06-Sd015",), workers=1, **kw):
     extra = kw.pop("extra", _syn())
+    kw.setdefault("non_associative", False)  # a mixed-integer program per friction: test_non_associative.py
     return fm.catalogue_map(list(specimens), "glued", kw.pop("mus", GRID), 1.0, tmp_path / name, workers=workers,
                             progress=False, func=cases.SYNTHETIC_CASE, extra=extra, **kw)
 
@@ -147,7 +148,7 @@ def test_analytic_curves_consistent(sid):
     from specimens.blocks import discretise
 
     arch = get_specimen(sid).arch
-    a = fm.analytic_curves(arch, "glued", 1.0, [0.3, 0.6, 1.2])
+    a = fm.analytic_curves(arch, "glued", 1.0, [0.3, 0.6, 1.2], non_associative=False)
     # uniqueness theorem: static LP without joint sliding = kinematic enumeration (HiGHS tolerance)
     assert a.lam_no_sliding == pytest.approx(a.lam_kinematic, rel=1e-6)
     # LP lambda(mu) non-decreasing and never above the no-sliding value (larger feasible set)
@@ -235,7 +236,7 @@ def test_cli_json_schema(tmp_path, capsys, monkeypatch):
 
     @functools.wraps(real)  # the CLI reads its defaults from the signature
     def fake(*a, **kw):
-        return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
+        return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn(), "non_associative": False})
 
     monkeypatch.setattr(fm, "catalogue_map", fake)
     monkeypatch.setattr(map_cmd, "catalogue_map", fake)  # the command imported it by name
@@ -246,7 +247,7 @@ def test_cli_json_schema(tmp_path, capsys, monkeypatch):
     data = json.loads(out)
     assert [d["id"] for d in data] == ["Sh06-Sd015", "Sh1-Sd010"]
     for d in data:
-        assert {"id", "mu_star_dem", "mu_star_two_bar", "mu_star_lp", "points"} <= set(d)
+        assert {"id", "mu_star_dem", "mu_star_two_bar", "mu_star_lp", "mu_star_na", "points"} <= set(d)
         assert all(set(p) >= {"mu", "lambda", "mode"} for p in d["points"])
         assert len(d["points"]) == 4 + 2 and 0.5 < d["mu_star_dem"] <= 0.6
     assert (tmp_path / "p" / "threshold_map.png").exists()
@@ -305,6 +306,8 @@ def test_real_dem_map_two_frictions(tmp_path):
     lam_ns = solve_lp(asm, math.inf, 1.0).lam
     assert solve_lp(asm, th.lo, 1.0).lam < (1 - fm.LP_REL_TOL) * lam_ns <= solve_lp(asm, th.hi, 1.0).lam
     assert th.lo < s.analytic.mu_star_lp <= th.hi
+    # without dilatancy too (its multiplier is at most the LP's: its mu* is not below the LP's)
+    assert s.analytic.mu_star_lp - fm.LP_MU_TOL <= s.analytic.mu_star_na <= th.hi
 
 
 @pytest.mark.slow
@@ -335,7 +338,7 @@ def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
 
     @functools.wraps(real)
     def fake(*a, **kw):
-        return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn()})
+        return real(*a, **{**kw, "func": cases.SYNTHETIC_CASE, "extra": _syn(), "non_associative": False})
 
     monkeypatch.setattr(fm, "catalogue_map", fake)
     monkeypatch.setattr(map_cmd, "catalogue_map", fake)  # the command imported it by name
