@@ -4,7 +4,8 @@
 Every member of :data:`specimens.arch_set.ARCH_SET` (round and pointed arches by parameters, spans
 0.5-10 m, thin to thick, glued and free; drawings in DXF, CSV and OBJ) is tilted as ``archdem tilt``
 does by default, and its lambda is set beside the static LP of the same blocks at the same
-frictions, the LP with no sliding and, for a regular ring, the continuous ring's multiplier.
+frictions, the least collapse without dilatancy (mixed-integer), the LP with no sliding and, for a
+regular ring, the continuous ring's multiplier.
 Writes benchmarks/results/validate_any_arch[_ENGINE].json and .md.
 
     python benchmarks/validate_any_arch.py [--arches a,b] [--engine pybullet|mujoco] [--workers N]
@@ -28,8 +29,9 @@ def one(job: tuple[str, str, str]) -> dict:
     name, engine, folder = job
     from analytic.limit.limit_continuous import continuous_collapse
     from analytic.limit.limit_discrete import solve_lp
+    from analytic.limit.non_associative import solve_non_associative
     from dem.core.settings import Settings
-    from dem.experiments.tilt.check import lp_check, lp_slides, reference_lp
+    from dem.experiments.tilt.check import lp_check, lp_slides, na_joints, reference_lp, same_mechanism
     from dem.experiments.tilt.run import tilt
     from specimens.arch_set import set_arch
     from specimens.errors import ArchdemInputError
@@ -45,17 +47,22 @@ def one(job: tuple[str, str, str]) -> dict:
            "lp_lambda_no_sliding": solve_lp(asm, math.inf, math.inf).lam,
            "continuous_lambda": continuous_collapse(m.arch).lam if m.arch is not None else float("nan"),
            "lp_hinges": [f"{j} {f}" for j, f in lp.hinges]}
+    na = solve_non_associative(asm, st.mu_joint, st.mu_base)  # Coulomb without dilatancy, beside the LP
+    row |= {"na_lambda": na.lam, "na_optimal": na.optimal, "na_seconds": na.seconds,
+            "na_joints": [f"{j} {v}" for j, v in na_joints(na).items()]}
     t0 = time.perf_counter()
     try:
         r = tilt(asm, st, label=name)
     except ArchdemInputError as exc:  # a tilt that finds no answer is a row of the table, not the end of the run
         return row | {"lambda": float("nan"), "err_pct": float("nan"), "mode": "failed", "dem_hinges": [], "n_sims": 30,
-                      "wall_s": time.perf_counter() - t0, "within_3pct": False, "warning": str(exc)}
+                      "wall_s": time.perf_counter() - t0, "within_3pct": False, "warning": str(exc),
+                      "same_mechanism_as_na": False}
     chk = lp_check(r, asm, lp)
     return row | {
         "lambda": r.lam, "err_pct": 100 * chk.rel_err, "mode": r.mode,
         "dem_hinges": [f"{j.joint} {j.face}" for j in r.joints if j.state in ("hinge", "hinge+slide")],
         "n_sims": r.n_sims, "wall_s": time.perf_counter() - t0, "within_3pct": bool(chk.agrees), "warning": chk.warning,
+        "same_mechanism_as_na": same_mechanism(r.joints, na),
     }
 
 
@@ -65,20 +72,29 @@ def _num(x: float, fmt: str) -> str:
 
 def table(rows: list[dict]) -> str:
     head = ("| arch | source | config | span [m] | t/Rp | bodies | LP | DEM | error | mode | continuous | "
-            "sims | wall [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+            "sims | wall [s] | no dilatancy (MIP [s]) | DEM vs it | same mechanism |\n"
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
     out = []
     for r in rows:
         lp = _num(r["lp_lambda"], ".4f") + (" (slides)" if r["lp_sliding"] else "")
         out.append(f"| {r['arch']} | {r['source']} | {r['config'] or '—'} | {_num(r['span_m'], '.2f')} | "
                    f"{_num(r['t_over_Rp'], '.3f')} | {r['bodies']} | {lp} | {_num(r['lambda'], '.4f')} | "
                    f"{_num(r['err_pct'], '+.2f')} % | {r['mode']} | {_num(r['continuous_lambda'], '.4f')} | "
-                   f"{r['n_sims']} | {r['wall_s']:.1f} |")
+                   f"{r['n_sims']} | {r['wall_s']:.1f} | {_num(r['na_lambda'], '.4f')} ({r['na_seconds']:.1f}"
+                   f"{'' if r['na_optimal'] else ', not proven'}) | {_num(100 * (r['lambda'] / r['na_lambda'] - 1), '+.2f')} % | "
+                   f"{'yes' if r['same_mechanism_as_na'] else 'no'} |")
     n3 = sum(r["within_3pct"] for r in rows)
     errs = [r["err_pct"] for r in rows if not math.isnan(r["err_pct"])]
     walls = sorted(r["wall_s"] for r in rows)
     foot = (f"\n{n3} of {len(rows)} within 3 % of the LP ({len(rows) - len(errs)} without an answer); error {min(errs):+.2f} % to {max(errs):+.2f} %, "
             f"mean |error| {sum(map(abs, errs)) / len(errs):.2f} %; wall time per tilt {walls[0]:.1f}-{walls[-1]:.1f} s "
             f"(median {walls[len(walls) // 2]:.1f} s).\n")
+    same = [r for r in rows if r["same_mechanism_as_na"]]
+    dev = [100 * (r["lambda"] / r["na_lambda"] - 1) for r in same]
+    foot += (f"Without dilatancy: {sum(r['na_optimal'] for r in rows)} of {len(rows)} proven optimal, "
+             f"{min(r['na_seconds'] for r in rows):.1f}-{max(r['na_seconds'] for r in rows):.1f} s each; the DEM has its "
+             f"mechanism on {len(same)} of {len(rows)}" + (f", there {min(dev):+.2f} % to {max(dev):+.2f} % from it" if dev else "")
+             + ".\n")
     return head + "\n".join(out) + foot
 
 
