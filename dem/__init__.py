@@ -15,7 +15,7 @@ from specimens.lazy import lazy_exports
 
 # public name -> its module (imported on first use)
 _EXPORTS = {
-    "ground_motion": "analytic.motions.records",
+    "ground_motion": "analytic.motions.records", "example_record": "analytic.motions.records",
     "Model": "dem.core.model", "as_model": "dem.core.model", "from_assembly": "dem.core.model",
     "Settings": "dem.core.settings",
     "SimResult": "dem.core.simulate", "simulate": "dem.core.simulate",
@@ -31,7 +31,7 @@ _EXPORTS = {
 __all__ = list(_EXPORTS)
 
 if TYPE_CHECKING:  # the same names for type checkers and editors
-    from analytic.motions.records import ground_motion
+    from analytic.motions.records import example_record, ground_motion
     from dem.core.model import Model, as_model, from_assembly
     from dem.core.settings import Settings
     from dem.core.simulate import SimResult, simulate

@@ -10,6 +10,10 @@ from matplotlib.patches import Polygon
 from specimens.blocks import Assembly
 from specimens.io import atomic_path
 
+#: ``gid`` of the joint labels and of the box of the drawing's data, so a test can find them.
+JOINT_LABEL_GID = "joint-label"
+INFO_BOX_GID = "drawing-info"
+
 
 def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensions: bool = True,
                   face_colors: list | None = None, joint_colors: dict[str, str] | None = None):
@@ -35,7 +39,7 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
         lab = (j.p_e + 0.35 * arch.t * j.tangent) * 1000
         if j.is_base:
             lab = (j.p_i + j.p_e) / 2 * 1000 + np.array([0.0, -0.25 * arch.t * 1000])
-        ax.text(lab[0], lab[1], j.name, ha="center", va="center", fontsize=7, color=col)
+        ax.text(lab[0], lab[1], j.name, ha="center", va="center", fontsize=7, color=col, gid=JOINT_LABEL_GID)
     piers = assembly.piers
     ground = -piers.height * 1000 if piers is not None else 0.0
     base_x = max((arch.Rc + arch.t), piers.inner_x(arch) + piers.width if piers else 0.0) * 1000 * 1.15
@@ -55,13 +59,12 @@ def draw_assembly(assembly: Assembly, ax=None, title: str | None = None, dimensi
         xr = -xi * 0.15
         ax.annotate("", xy=(xr, 0), xytext=(xr, rise), arrowprops=dict(arrowstyle="<->", lw=0.8))
         ax.text(xr - 5, rise / 2, f"rise {rise:.0f} mm", ha="right", va="center", fontsize=8, rotation=90)
-        ax.text(0.02, 0.98, f"Ri = {arch.Ri*1000:.0f} mm, Re = {arch.Re*1000:.0f} mm\n"
-                f"e = {arch.e*1000:.0f} mm, t = {arch.t*1000:.0f} mm\n"
-                + (f"piers {piers.width*1000:.0f} x {piers.height*1000:.0f} x {piers.depth_for(arch)*1000:.0f} mm"
-                   + (f", {piers.load / 1e3:g} kN on each" if piers.load else "") + "\n"
-                   if piers is not None else "") +
-                f"{assembly.config}, {assembly.n_bodies} bodies, {assembly.total_mass:.3f} kg",
-                transform=ax.transAxes, va="top", fontsize=8, family="monospace")
+        _info_box(ax, f"Ri = {arch.Ri*1000:.0f} mm, Re = {arch.Re*1000:.0f} mm, "
+                  f"e = {arch.e*1000:.0f} mm, t = {arch.t*1000:.0f} mm\n"
+                  + (f"piers {piers.width*1000:.0f} x {piers.height*1000:.0f} x {piers.depth_for(arch)*1000:.0f} mm"
+                     + (f", {piers.load / 1e3:g} kN on each" if piers.load else "") + "\n"
+                     if piers is not None else "") +
+                  f"{assembly.config}, {assembly.n_bodies} bodies, {assembly.total_mass:.3f} kg")
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
@@ -89,13 +92,12 @@ def _draw_drawn(assembly, ax, title, face_colors, joint_colors):
         if j.is_base:
             lab = p.mean(axis=0) - 0.4 * size * np.asarray(j.normal) * (1.0 if j.a < 0 else -1.0)
         ax.text(lab[0], lab[1], f"{j.index}" + ("" if j.name == f"J{j.index}" else f" {j.name}"), ha="center",
-                va="center", fontsize=6, color=col)
+                va="center", fontsize=6, color=col, gid=JOINT_LABEL_GID)
     src = assembly.source
-    ax.text(0.02, 0.98, f"{src.get('file', '')} ({src.get('units', 'm')})\n{assembly.n_bodies} bodies, "
-            f"{len(assembly.joints)} joints ({sum(j.is_base for j in assembly.joints)} on supports), "
-            f"{assembly.total_mass:.4g} kg\n" + ("one chain: four-hinge enumeration applies" if assembly.is_chain
-                                                  else "not one chain: LP and DEM only"),
-            transform=ax.transAxes, va="top", fontsize=8, family="monospace")
+    _info_box(ax, f"{src.get('file', '')} (drawn in {src.get('units', 'm')}), {assembly.n_bodies} bodies, "
+              f"{len(assembly.joints)} joints ({sum(j.is_base for j in assembly.joints)} on supports), "
+              f"{assembly.total_mass:.4g} kg\n" + ("one chain: four-hinge enumeration applies" if assembly.is_chain
+                                                   else "not one chain: LP and DEM only"))
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
@@ -105,14 +107,30 @@ def _draw_drawn(assembly, ax, title, face_colors, joint_colors):
     return ax
 
 
+def _info_box(ax, text: str) -> None:
+    """The drawing's data below the x axis's label, clear of the blocks and their joint labels (which
+    fill different corners of the axes from one arch to the next)."""
+    # x in axes fractions, y in fractions of the x label's box: the box follows the label wherever
+    # the layout puts it
+    ax.annotate(text, xy=(0.0, 0.0), xycoords=("axes fraction", ax.xaxis.label), xytext=(0, -4),
+                textcoords="offset points", ha="left", va="top", fontsize=8, family="monospace", gid=INFO_BOX_GID,
+                annotation_clip=False, bbox=dict(boxstyle="square,pad=0.3", fc="white", ec="0.5", lw=0.6))
+
+
+def drawing_figure(assembly: Assembly, title: str | None = None) -> Figure:
+    """The figure ``save_drawing`` writes (7 x 6 in), laid out."""
+    fig = Figure(figsize=(7, 6))
+    ax = fig.subplots()
+    draw_assembly(assembly, ax, title=title)
+    fig.tight_layout()
+    return fig
+
+
 def save_drawing(assembly: Assembly, path: str | Path, title: str | None = None) -> Path:
     """Draw ``assembly`` and save it atomically to ``path`` (format from the suffix)."""
 
     path = Path(path)
-    fig = Figure(figsize=(7, 5.5))
-    ax = fig.subplots()
-    draw_assembly(assembly, ax, title=title)
-    fig.tight_layout()
+    fig = drawing_figure(assembly, title)
     with atomic_path(path, overwrite=True) as tmp:
         fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=130)
     return path

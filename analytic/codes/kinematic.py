@@ -11,8 +11,8 @@ bodies' centroids at rest (along the load):
     a0*    = alpha0 g / (e* FC)                       (spectral activation acceleration)
 
 with the confidence factor ``FC`` of the knowledge level. The **linear** check (life safety, behaviour
-factor ``q = 2``): the ground acceleration that activates the mechanism (the floor's peak
-acceleration, or the ground's, equal to ``a0*``) times ``q`` is the capacity ``ag,SLV``.
+factor ``q = 2``): ``q a0* >= ag S`` (at a height ``q a0* >= a_Z``, the floor's peak acceleration); the
+safety index is ``q a0* / (ag S)``, and ``capacity_ag`` the hazard's ``ag`` at which the two are equal.
 
 The **non-linear** analysis follows the mechanism to large rotations: ``alpha(phi)`` is the multiplier
 that holds it displaced (virtual work in the displaced configuration), the control point is the
@@ -20,7 +20,7 @@ bodies' mass centroid (``d_C``) and the equivalent oscillator has ``d* = d_C / e
 ``a* = alpha g / (e* FC)``. ``d0*`` is where ``a*`` vanishes; the ultimate displacements are
 ``0.4 d0*`` (SLV) and ``0.6 d0*`` (SLC), their periods ``T = c pi sqrt(d / a(d))`` (c = 1.68, 1.56),
 and the demand is the largest spectral displacement up to that period at the mechanism's damping
-(8 %, 10 %).
+(8 %, 10 %). The displacement check is ``d_u* >= demand``, its safety index their ratio.
 """
 from __future__ import annotations
 
@@ -105,13 +105,18 @@ def capacity_ag(site, demand: Callable[[object], float], capacity: float) -> flo
     return float(brentq(f, lo, hi, xtol=1e-10 * G, rtol=1e-10))
 
 
-def _verdict(site, ag_cap: float, extra: dict) -> dict:
+def _verdict(site, ag_cap: float, demand: float, capacity: float, extra: dict) -> dict:
+    """The check's dict: ``demand`` and ``capacity`` in the clause's own quantity (m/s^2 or m), the
+    safety index ``capacity / demand`` and the verdict; ``capacity_ag`` [m/s^2]: the hazard's ``ag``
+    at which the clause holds with equality (the spectrum rebuilt), ``capacity_pga`` its ``ag S``."""
     if math.isfinite(ag_cap):
         cap_pga = ag_cap if isinstance(site, TabulatedSpectrum) else ag_cap * rebuild(site, ag=ag_cap).S
     else:
         cap_pga = math.inf
-    return {**extra, "capacity_ag": ag_cap, "capacity_pga": cap_pga, "demand_ag": site.ag, "demand_pga": site.pga,
-            "safety_index": ag_cap / site.ag, "verified": bool(ag_cap >= site.ag)}
+    # the index is the ratio of the two quantities the clause compares, so it can be recomputed from them
+    index = capacity / demand if demand > 0 else math.inf
+    return {**extra, "demand": demand, "capacity": capacity, "capacity_ag": ag_cap, "capacity_pga": cap_pga,
+            "demand_ag": site.ag, "demand_pga": site.pga, "safety_index": index, "verified": bool(capacity >= demand)}
 
 
 @dataclass(frozen=True)
@@ -127,25 +132,29 @@ class LinearKinematic:
     mass: float
 
     def check(self, site, q: float = Q_MASONRY, height: Height | None = None) -> dict:
-        """The linear check (life safety): ``ag,SLD`` activates the mechanism (the peak acceleration
-        where it stands equals ``a0*``), ``ag,SLV = q ag,SLD`` is the capacity; the safety index is
-        ``ag,SLV / ag`` of the site; ``capacity_pga`` = ``ag,SLV S`` [m/s^2]."""
+        """The linear check (life safety) as the Circolare writes it, ``q a0* >= ag S`` at ground level
+        (``q a0* >= a_Z`` at a height): ``demand`` = the peak acceleration where the mechanism stands,
+        ``capacity`` = ``q a0*`` [m/s^2], safety index their ratio; ``activation_ag``: the hazard's ``ag``
+        that activates the mechanism (no ``q``); ``capacity_ag``: the one at which the check holds with
+        equality."""
         q = _factor("behaviour factor q", q, Q_RANGE)
-        ag_sld = capacity_ag(site, lambda s: peak_acceleration(s, height), self.a0_star)
-        return _verdict(site, q * ag_sld, {"kind": "linear", "limit_state": "SLV", "q": q, "capacity_ag_SLD": ag_sld,
-                                       "activation_acceleration": self.a0_star,
-                                       "demand_acceleration": peak_acceleration(site, height),
-                                       "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
+        peak = lambda s: peak_acceleration(s, height)  # noqa: E731
+        ag_act = capacity_ag(site, peak, self.a0_star)
+        return _verdict(site, capacity_ag(site, peak, q * self.a0_star), peak(site), q * self.a0_star,
+                        {"kind": "linear", "limit_state": "SLV", "q": q, "activation_ag": ag_act,
+                         "activation_acceleration": self.a0_star, "demand_acceleration": peak(site),
+                         "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
 
     def activation(self, site, height: Height | None = None, limit_state: str = "SLD") -> dict:
-        """The activation check (no behaviour factor): the ``ag`` at which the peak acceleration where
-        the mechanism stands equals ``a0*``, against the site's ``ag`` (``site`` the hazard of
-        ``limit_state``: SLD for the code's damage-limitation check)."""
-        ag_act = capacity_ag(site, lambda s: peak_acceleration(s, height), self.a0_star)
-        return _verdict(site, ag_act, {"kind": "activation", "limit_state": limit_state, "q": 1.0,
-                                       "activation_acceleration": self.a0_star,
-                                       "demand_acceleration": peak_acceleration(site, height),
-                                       "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
+        """The activation check (no behaviour factor), ``a0* >= ag S`` (``a_Z`` at a height): ``demand`` =
+        the peak acceleration where the mechanism stands, ``capacity`` = ``a0*`` [m/s^2] (``site`` the
+        hazard of ``limit_state``: SLD for the code's damage-limitation check)."""
+        peak = lambda s: peak_acceleration(s, height)  # noqa: E731
+        ag_act = capacity_ag(site, peak, self.a0_star)
+        return _verdict(site, ag_act, peak(site), self.a0_star,
+                        {"kind": "activation", "limit_state": limit_state, "q": 1.0, "activation_ag": ag_act,
+                         "activation_acceleration": self.a0_star, "demand_acceleration": peak(site),
+                         "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})
 
     def describe(self) -> dict:
         return {"alpha0": self.alpha0, "M_star": self.M_star, "e_star": self.e_star, "a0_star": self.a0_star,
@@ -241,7 +250,7 @@ class CapacityCurve:
             Se_T = float(rebuild(site, damping=xi).Se(T))
         else:
             Se_T = float(floor_spectrum(site, T, xi, height.z_ratio, height.T1, height.floors, height.damping1))
-        return _verdict(site, capacity_ag(site, demand, d_u),
+        return _verdict(site, capacity_ag(site, demand, d_u), d_dem, d_u,
                         {"kind": "non-linear", "limit_state": ls, "d_u_star": d_u, "a_u_star": a_u, "period": T,
                          "damping": xi, "Se_at_period": Se_T, "demand_displacement": d_dem, "capacity_displacement": d_u,
                          "where": "ground" if height is None else f"z/H = {height.z_ratio:g}"})

@@ -509,3 +509,17 @@ def ground_motion(sine: float | None = None, amplitude: float | None = None, rec
         positive("--pga", pga)
         m = m.to_pga(pga * G)
     return m
+
+
+#: Records shipped inside the package (``analytic/motions/data/``, provenance in its README), so an
+#: example runs from any folder; the full set stays with the test data.
+EXAMPLE_RECORDS = ("RSN77_SFERN_PUL164.AT2",)
+_EXAMPLE_DIR = Path(__file__).resolve().parent / "data"
+
+
+def example_record(name: str = EXAMPLE_RECORDS[0]) -> Path:
+    """The path of a record shipped with archdem: by default ``RSN77_SFERN_PUL164.AT2`` (San Fernando
+    1971, Pacoima Dam 164 deg, PEER NGA-West2 AT2 in g, dt 0.01 s, PGA 1.219 g)."""
+    if name not in EXAMPLE_RECORDS:
+        raise ArchdemInputError(f"no shipped record {name!r}; shipped: {', '.join(EXAMPLE_RECORDS)}")
+    return _EXAMPLE_DIR / name

@@ -27,10 +27,29 @@ from specimens.errors import ArchdemInputError
 FRICTION_LAWS = ("associative", "non-associative")
 
 
+#: What each line of the output is (``archdem analytic --help``); lambda is the horizontal load as a
+#: fraction of the weight at collapse (the tilt test's tan(theta)).
+TERMS = """terms (lambda: the horizontal load at collapse over the weight):
+  continuous     four-hinge mechanism of the continuous ring (hinges anywhere, no sliding); a hinge
+                 is its half (L, R) and its polar angle [rad] about that half's centre, 0 at the
+                 springing; in a pier (LP, RP) its height h [m] above the ground
+  discrete       four-hinge enumeration over the joints of the voussoirs (no sliding)
+  LP (friction)  static linear program over the same joints with Coulomb friction (joints may
+                 hinge or slide; associative: sliding joints dilate)
+  two-bar        the ring as two halves hinged at the springings with a frictionless slider at
+                 the crown (lambda); mu*: the friction at the crown above which it stops sliding
+                 and the arch rocks (four hinges) instead
+  mu* (LP)       of a drawing: the least joint friction at which no joint between blocks slides in
+                 the LP's collapse
+faces: int = intrados, ext = extrados."""
+
+
 def register(sub) -> None:
     p = sub.add_parser("analytic", help="limit analysis: continuous, discrete (enumeration and LP), two-bar; "
                                         "a drawing's static LP (--geometry)",
-                       description=" ".join(line.strip() for line in __doc__.split("\n\n")[0].splitlines()))
+                       description=" ".join(line.strip() for line in __doc__.split("\n\n")[0].splitlines()),
+                       # raw: the terms' table keeps its lines
+                       epilog=TERMS, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_arch_arguments(p)
     p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"),
                    help="discrete configuration")
@@ -144,7 +163,8 @@ def run(args: argparse.Namespace) -> int:
     if not res["stands"]:  # its multipliers are negative or missing: no load capacity to print
         print("  the arch cannot stand under self-weight: no collapse multiplier (see --json for the analyses)")
         return 1
-    hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} {h['face'][:3]}" if "half" in h else
+    # the angle's unit on every hinge: a bare 0.074 reads as a length in metres as easily
+    hc = ", ".join(f"{h['half'][0].upper()} {h['angle_rad']:.3f} rad {h['face'][:3]}" if "half" in h else
                    f"{h['pier'][0].upper()}P h={h['height_m']:.3f} m {h['face'][:3]}" for h in res["hinges_continuous"])
     print(f"  continuous   lambda = {_lam(res['lambda_continuous'])}   hinges: {hc}")
     if on_piers:
@@ -158,7 +178,8 @@ def run(args: argparse.Namespace) -> int:
     if on_piers:
         print(f"  two-bar      ({res['two_bar_message']})")
     else:
-        print(f"  two-bar      lambda = {_lam(res['lambda_two_bar'])}   mu* = {_lam(res['mu_star'], '.3f')}")
+        print(f"  two-bar      lambda = {_lam(res['lambda_two_bar'])} (frictionless crown slider)   "
+              f"mu* = {_lam(res['mu_star'], '.3f')} (friction above which the crown stops sliding and the arch rocks)")
     for w in res["warnings"]:
         print(f"  warning: {w}")
     lam = res["lambda_continuous"]

@@ -71,9 +71,9 @@ from urllib.parse import urlsplit
 
 import h5py
 import numpy as np
-from tqdm import tqdm
 
 from dem.core.extras import require
+from dem.core.progress import Progress, TerminalLine, terminal
 from dem.core.provenance import provenance
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path, exclusive, json_default, writable_dir
@@ -455,7 +455,7 @@ def _crash_error(exc: BaseException) -> str | None:
 
 # ----------------------------------------------------------------------------- run
 def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str | os.PathLike, workers: int | None = None,
-              scheduler: str | None = None, resume: bool = False, progress: bool = True,
+              scheduler: str | None = None, resume: bool = False, progress: bool | Progress = True,
               study_attrs: dict | None = None, seed: int | None = None, definition: dict | None = None) -> StudyResult:
     """Run every case of a study and store each result in ``out_path`` as it finishes.
 
@@ -463,7 +463,9 @@ def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str
     scheduler address (``"tcp://HOST:PORT"``). ``study_attrs``: JSON-serialisable
     parameters common to the study (checked on resume). ``seed``: recorded and checked on
     resume; the engine does not use it (put per-case seeds into the cases). ``definition``: the
-    command line's options, stored with a new study (see :func:`stored_definition`). Returns the
+    command line's options, stored with a new study (see :func:`stored_definition`). ``progress``: True,
+    the cases done on a terminal line (:func:`dem.core.progress.terminal`: stderr, only a terminal); False,
+    nothing; a callable, called ``progress(done, total, note)`` as each case ends. Returns the
     records of ``cases`` in their order, read back from the file.
     Raises :class:`ArchdemInputError` (bad cases, existing file without ``resume``, a
     mismatching study on resume), :class:`StudyInterrupted` (a local worker died) and
@@ -474,7 +476,7 @@ def run_study(cases: Sequence[dict], func: Callable[[dict], dict], out_path: str
 
 
 def run_studies(studies: Sequence[tuple], func: Callable[[dict], dict], workers: int | None = None,
-                scheduler: str | None = None, resume: bool = False, progress: bool = True) -> list[StudyResult]:
+                scheduler: str | None = None, resume: bool = False, progress: bool | Progress = True) -> list[StudyResult]:
     """Several studies of one case function, each ``(cases, out_path, study_attrs, seed[, definition])`` and stored in
     its own file as :func:`run_study` stores one, run by one pool of workers: its processes start once
     and no core waits for the end of one study before the next begins. Returns one result per study."""
@@ -518,8 +520,9 @@ def lock_path(study: str | os.PathLike) -> Path:
 def _execute(todo, func, workers, scheduler, progress) -> None:
 
     pool = _DaskPool(scheduler) if scheduler else _LocalPool(min(int(workers or os.cpu_count() or 1), len(todo)))
-    bar = tqdm(total=len(todo), desc="cases", unit="case", file=sys.stderr, dynamic_ncols=True,
-               disable=not progress or not sys.stderr.isatty())
+    files = list(dict.fromkeys(Path(p).name for *_, p in todo))
+    what = f"study {files[0]}" if len(files) == 1 else f"{len(files)} studies"
+    bar = progress if callable(progress) else terminal(what, unit="cases", enabled=bool(progress))
     n_ok = n_failed = 0
     written: set = set()
     futures: dict = {}
@@ -535,11 +538,15 @@ def _execute(todo, func, workers, scheduler, progress) -> None:
         else:
             n_failed += 1
             last = rec.error.strip().splitlines()[-1] if rec.error.strip() else "error"
-            tqdm.write(f"case {key} {canonical_json(case)} failed: {last}", file=sys.stderr)
-        bar.set_postfix(ok=n_ok, failed=n_failed, refresh=False)
-        bar.update(1)
+            msg = f"case {key} {canonical_json(case)} failed: {last}"
+            if isinstance(bar, TerminalLine):
+                bar.write(msg)
+            else:
+                print(msg, file=sys.stderr)
+        bar(n_ok + n_failed, len(todo), f"ok {n_ok}, failed {n_failed}")
 
     cancel = True
+    bar(0, len(todo), "starting")
     try:
         for key, case, where in todo:
             futures[pool.submit(_run_case, func, case)] = (key, case, where)
@@ -571,7 +578,8 @@ def _execute(todo, func, workers, scheduler, progress) -> None:
                     pass
         raise
     finally:
-        bar.close()
+        if isinstance(bar, TerminalLine):
+            bar.close()
         pool.close(cancel)
 
 

@@ -6,7 +6,14 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.codes.assessment import assess, assess_monument, monument_site, monument_strips
+from analytic.codes.assessment import (
+    assess,
+    assess_monument,
+    index_text,
+    monument_site,
+    monument_strips,
+    quantity_text,
+)
 from analytic.codes.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, Masonry, Strips, masonry_type
 from analytic.codes.kinematic import CONFIDENCE_FACTORS, Height
 from analytic.limit.ties import Tie
@@ -153,20 +160,56 @@ def _period_range(args: argparse.Namespace) -> tuple[float, float] | None:
     return rng[0], rng[1]
 
 
+def _strengthening(row: dict) -> str:
+    return "+".join(k for k, on in (("FRP", row.get("frp")), ("tie", row.get("tie"))) if on) or "none"
+
+
+def check_table(rows: list[dict], lead: list[tuple[str, int, list[str]]] | None = None) -> list[str]:
+    """The terminal table of :func:`analytic.codes.assessment.check_rows`: demand and capacity as the
+    clause compares them, the index (capacity / demand), the verdict and the clause; ``lead``: columns
+    before them, as (header, width, one value per row)."""
+    lead = lead or []
+    head = "".join(f"{h:{w}s} " for h, w, _ in lead)
+    out = [f"  {head}{'limit state / check':28s} {'demand':>32s} {'capacity':>34s} {'index':>7s}  {'verdict':12s}  clause"]
+    for k, r in enumerate(rows):
+        cols = "".join(f"{vals[k]:{w}s} " for _, w, vals in lead)
+        name = f"{r['limit_state']} {r['check']}" + ("" if r["code_check"] else " *")
+        out.append(f"  {cols}{name:28s} {r['demand_symbol'] + ' ' + quantity_text(r['demand'], r['unit']):>32s} "
+                   f"{r['capacity_symbol'] + ' ' + quantity_text(r['capacity'], r['unit']):>34s} "
+                   f"{index_text(r['safety_index']):>7s}  {r['verdict']:12s}  {r['clause']}")
+    if any(not r["code_check"] for r in rows):
+        out.append("  * the a0*/PGA convention of published tables: reported, not a code check, never governs")
+    return out
+
+
+def _check_report(args: argparse.Namespace) -> None:
+    """Refuse a ``--report`` that is neither HTML nor PDF or would overwrite a file, and a title-block option
+    without a PDF report, in one line."""
+    if args.report is not None:
+        if not args.report.lower().endswith((".html", ".pdf")):
+            raise ArchdemInputError(f"--report must end in .html or .pdf, got {args.report!r}")
+        writable_file(args.report, overwrite=False)
+    for dest in ("project", "engineer"):
+        option_used(args, dest, (args.report or "").lower().endswith(".pdf"),
+                    "it goes in the title block of a --report FILE.pdf")
+
+
 def _run_monument(args: argparse.Namespace, monument) -> int:
-    """A monument's configurations (:mod:`specimens.monuments`), unreinforced and with FRP strips,
-    against its site (or the spectrum given)."""
+    """A monument's configurations (:mod:`specimens.monuments`), unreinforced, with FRP strips and with
+    ``--tie``, against its site (or the spectrum given), at ground level or at ``--z-ratio``."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.assessment.figure import hinges_text
 
+    # its geometry is the reconstruction's and the records need one configuration (assess_with_records)
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
-                         "records", "report", "z_ratio", "tie") if getattr(args, k, None) is not None]
+                         "records") if getattr(args, k, None) is not None]
     if given:
-        raise ArchdemInputError(f"{monument.name} is assessed as reconstructed (its own geometry, at ground level, "
-                                f"no records or report): --{given[0].replace('_', '-')} does not apply")
+        raise ArchdemInputError(f"{monument.name} is assessed as reconstructed (its own geometry, no records): "
+                                f"--{given[0].replace('_', '-')} does not apply")
     site = monument_site() if args.spectrum is None else _spectrum(args)
-    if args.sld_ag is not None:
-        raise ArchdemInputError(f"{monument.name} is assessed against its own hazard: --sld-ag does not apply")
+    height = _height(args)
+    tie = _tie(args)
+    sld = _sld_site(args, site)
     if args.frp is not None:
         strips = _strips(args)
     else:
@@ -174,31 +217,54 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
             raise ArchdemInputError(f"{monument.name}'s strips are described by the study (E_f assumed): "
                                     f"--frp-modulus belongs to --frp")
         strips = monument_strips(args.FC, args.frp_face, _masonry(args))
-    rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state)
+    _check_report(args)  # before the work: a bad report path must not cost the assessment
+    rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state, height=height, tie=tie,
+                           sld_site=sld)
     out = {"id": monument.name, "source": monument.source, "arch": {"e": monument.arch.e, "t": monument.arch.t,
            "Rp": monument.arch.Rp, "width": monument.arch.width, "span": monument.arch.span,
            "rise": monument.arch.rise},
            "configurations": {k: (None if v is None else vars(v)) for k, v in monument.configurations.items()},
-           "density": monument.density, "spectrum": site.describe(), "strips": strips.describe(monument.arch.width),
-           "rows": rows}
+           "density": monument.density, "spectrum": site.describe(),
+           "sld_spectrum": None if sld is None else sld.describe(),
+           "height": None if height is None else vars(height), "strips": strips.describe(monument.arch.width),
+           "tie": None if tie is None else tie.describe(), "rows": rows}
+    if args.report is not None:
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+        from dem.experiments.assessment.figure import write_report
+        from dem.experiments.assessment.report_pdf import monument_governing, write_monument_pdf_report
+
+        if args.report.lower().endswith(".pdf"):
+            write_monument_pdf_report(args.report, monument, site, strips, args.FC, args.q, args.limit_state,
+                                      args.project or "-", args.engineer or "-", rows=rows, height=height,
+                                      sld_site=sld)
+        else:
+            _, name, *gov = monument_governing(monument, site, strips, args.FC, args.q, args.limit_state, rows,
+                                               height, sld)
+            write_report(args.report, f"{monument.name} ({name})", site, *gov)
+        out["report"] = args.report
     if args.json:
         print_json(out)
         return 0
     sd = strips.describe(monument.arch.width)
-    print(f"{monument.name}: {site.describe()['code']} site, PGA {site.pga:.3g} m/s^2 ({site.pga / G:.3f} g); "
+    where = "ground level" if height is None else f"z/H = {height.z_ratio:g} of a {height.floors}-floor building"
+    print(f"{monument.name}: {site.describe()['code']} site, PGA {site.pga / G:.3f} g ({site.pga:.3g} m/s^2); "
+          f"{args.limit_state.upper()}{'' if sld is None else f' and SLD (ag {sld.ag / G:.3f} g)'}, at {where}; "
           f"FRP {sd['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
           f"on the {strips.face}: design {sd['design_strength_MPa']:.4g} MPa ({sd['governing']}), "
-          f"force {sd['force_N'] / 1e3:.3g} kN")
-
-    def num(v) -> str:
-        return f"{'':>7s}" if v is None else f"{v:7.2f}"
-
-    print(f"  {'configuration':18s} {'FRP':4s} {'lambda':>7s} {'e*':>6s} {'a0* [g]':>8s} {'d0* [mm]':>9s} "
-          f"{'a0*/PGA':>7s} {'SI lin':>7s} {'SI disp':>7s}  hinges")
+          f"force {sd['force_N'] / 1e3:.3g} kN" + ("" if tie is None else f"; tie at {tie.height:g} m yielding at "
+                                                  f"{tie.force / 1e3:.4g} kN (without the strips)"))
+    print(f"  {'configuration':18s} {'strengthening':13s} {'lambda':>7s} {'e*':>6s} {'a0* [g]':>8s} {'d0* [mm]':>9s} "
+          f"{'a0*/PGA':>7s} {'governing':>22s} {'index':>7s}  {'verdict':12s}  hinges")
     for r in rows:
-        print(f"  {r['configuration']:18s} {'yes' if r['frp'] else 'no':4s} {r['lambda']:7.4f} {r['e_star']:6.3f} "
-              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {num(r['activation_over_pga'])} "
-              f"{num(r['safety_index_linear'])} {num(r['safety_index_displacement'])}  {hinges_text(r['hinges'])}")
+        print(f"  {r['configuration']:18s} {_strengthening(r):13s} {r['lambda']:7.4f} {r['e_star']:6.3f} "
+              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {r['activation_over_pga']:7.3f} "
+              f"{r['governing_check']:>22s} {index_text(r['safety_index']):>7s}  "
+              f"{'verified' if r['verified'] else 'not verified':12s}  {hinges_text(r['hinges'])}")
+    print("  checks (safety index = capacity / demand):")
+    flat = [(r, c) for r in rows for c in r["check_rows"]]
+    for line in check_table([c for _, c in flat], [("configuration", 18, [r["configuration"] for r, _ in flat]),
+                                                   ("strengthening", 13, [_strengthening(r) for r, _ in flat])]):
+        print(line)
     return 0
 
 
@@ -210,18 +276,10 @@ def _print(title: str, hinges: list[dict], res) -> None:
     print(f"  {title}: hinges at {hinges_text(hinges)}")
     print(f"    alpha0 = {d['alpha0']:.4f}   M* = {d['M_star']:.4g} kg   e* = {d['e_star']:.3f}   "
           f"a0* = {d['a0_star'] / G:.4f} g (FC {d['FC']:g})   d0* = {d['d0_star'] * 1e3:.4g} mm")
-    for c in d["checks"]:
-        if c["kind"] == "activation":
-            what = "activation, no q" + ("" if c.get("code_check", True) else " (convention a0*/PGA, not a code check)")
-        elif c["kind"] == "linear":
-            what = f"linear, q = {c['q']:g}"
-        else:
-            what = (f"displacement, d_u* = {c['d_u_star'] * 1e3:.4g} mm vs demand {c['demand_displacement'] * 1e3:.4g} mm "
-                    f"at T = {c['period']:.3f} s")
-        print(f"    {c['limit_state']} {what} ({c['where']}): capacity ag {c['capacity_ag'] / G:.3f} g vs "
-              f"{c['demand_ag'] / G:.3f} g -> safety index {c['safety_index']:.2f} "
-              f"({'verified' if c['verified'] else 'NOT verified'})")
-    print(f"    governing: {d['governing_check']}, safety index {d['safety_index']:.2f}")
+    for line in check_table(d["check_rows"]):
+        print("  " + line)
+    print(f"    governing: {d['governing_check']}, safety index {index_text(d['safety_index'])} "
+          f"({'verified' if d['verified'] else 'not verified'})")
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -240,10 +298,7 @@ def _run(args: argparse.Namespace) -> int:
     strips = _strips(args)
     tie = _tie(args)
     sld = _sld_site(args, site)
-    if args.report is not None:
-        if not args.report.lower().endswith(".html"):
-            raise ArchdemInputError(f"--report must end in .html, got {args.report!r}")
-        writable_file(args.report, overwrite=False)
+    _check_report(args)
     if not args.records and (args.match_periods is not None or args.workers is not None):
         raise ArchdemInputError("--match-periods and --workers belong to --records")
     a = assess_with_records(arch, args.records or (), site, FC=args.FC, q=args.q, limit_state=args.limit_state,
@@ -268,8 +323,13 @@ def _run(args: argparse.Namespace) -> int:
     if args.report is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.assessment.figure import write_report
+        from dem.experiments.assessment.report_pdf import command_inputs, write_pdf_report
 
-        write_report(args.report, label, site, mech, res, out, frp, out.get(key))
+        if args.report.lower().endswith(".pdf"):
+            write_pdf_report(args.report, label, site, mech, res, out, frp, out.get(key), project=args.project or "-",
+                             engineer=args.engineer or "-", inputs=command_inputs(args, arch))
+        else:
+            write_report(args.report, label, site, mech, res, out, frp, out.get(key))
         out["report"] = args.report
     if args.json:
         print_json(out)
@@ -290,7 +350,7 @@ def _run(args: argparse.Namespace) -> int:
         _print("with " + " and ".join(parts), out[key]["hinges"], frp)
         for c in out[key]["crushing"] or []:
             print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
-                  f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'NOT verified'})")
+                  f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'not verified'})")
     if "records" in out:
         rec = out["records"]
         print(f"  records matched over {rec['period_range'][0]:.3g}-{rec['period_range'][1]:.3g} s, DEM "
@@ -310,7 +370,14 @@ def _run(args: argparse.Namespace) -> int:
 def register(sub) -> None:
     p = sub.add_parser("assess", help="code-based check: kinematic analysis (linear and non-linear) of the arch's "
                                       "mechanism against a site spectrum, with or without FRP strips",
-                       description=__doc__.splitlines()[0])
+                       description=__doc__.splitlines()[0],
+                       epilog="Every option applies to a catalogue arch, a parametric arch and a drawing. The built-in "
+                              "noh-gumbad has its own reconstructed geometry, piers, density and site (its spectrum by "
+                              "default): the geometry options, --density, --contact and --records do not apply to it; "
+                              "--spectrum, --sld-ag, --limit-state, --FC, --q, the height options, --frp and its "
+                              "options, --tie (a row per configuration with the tie alone) and --json do. Each check "
+                              "prints its demand and capacity as the clause compares them and the safety index "
+                              "capacity / demand (docs/physics/assessment.md).")
     add_arch_arguments(p)
     p.add_argument("--spectrum", default=None, metavar="ntc2018|ec8|FILE",
                    help="the code's elastic spectrum, or a file of period [s] and Se [g] at 5 %% damping (a monument "
@@ -331,7 +398,8 @@ def register(sub) -> None:
                    help=f"the limit state whose hazard the spectrum is: SLD (activation check, no q), SLV (linear and "
                         f"displacement checks) or SLC (displacement check) (default {ls})")
     p.add_argument("--sld-ag", type=float, default=None,
-                   help="the SLD hazard's ag [g] (same site): adds the activation check (no q) beside SLV or SLC")
+                   help="the SLD hazard's ag [g] (same site): adds the activation check (no q) beside SLV or SLC "
+                        "(any arch, and noh-gumbad)")
     p.add_argument("--sld-F0", type=float, default=None, help="NTC 2018: F0 of the SLD hazard (default the spectrum's)")
     p.add_argument("--sld-Tc-star", dest="sld_Tc_star", type=float, default=None,
                    help="NTC 2018: Tc* [s] of the SLD hazard (default the spectrum's)")
@@ -367,15 +435,20 @@ def register(sub) -> None:
     p.add_argument("--tie", default=None, metavar="HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN]",
                    help="a steel tie across the structure at a height above the springing line (0: the springings or "
                         "the pier tops; negative: in the piers), of cross-section area and yield strength; "
-                        "rigid-plastic in the analyses (the prestress is recorded)")
+                        "rigid-plastic in the analyses (the prestress is recorded); with noh-gumbad a row per configuration "
+                        "with the tie alone")
     p.add_argument("--records", nargs="+", default=None, metavar="FILE",
-                   help="records (.AT2, .smc, ESM, CSV) matched to the site spectrum and shaken on the DEM")
+                   help="records (.AT2, .smc, ESM, CSV) matched to the site spectrum and shaken on the DEM (an arch, not "
+                        "noh-gumbad)")
     p.add_argument("--match-periods", default=None, metavar="LO,HI",
                    help="period range [s] of the records' match (default 0.2-2 x the limit state's period)")
     add_engine_argument(p, dynamics=True)
     p.add_argument("--workers", type=workers_option, default=None,
                    help="processes for the record runs (default: all cores, at most one per record)")
-    p.add_argument("--report", default=None, metavar="FILE.html", help="write a one-page assessment with its figures "
-                                                                       "(never overwrites)")
+    p.add_argument("--report", default=None, metavar="FILE.html|FILE.pdf",
+                   help="write the assessment with its figures: FILE.html one page, FILE.pdf a printable report "
+                        "(title block, inputs, site, each step, verdicts, figures) (never overwrites)")
+    p.add_argument("--project", default=None, help="--report FILE.pdf: the project named in the title block (default -)")
+    p.add_argument("--engineer", default=None, help="--report FILE.pdf: the engineer named in the title block (default -)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=_run)

@@ -4,12 +4,12 @@ from __future__ import annotations
 import base64
 import html
 import io
-import json
 import math
 
 import numpy as np
 from matplotlib.figure import Figure
 
+from analytic.codes.assessment import check_rows, index_text, quantity_text, site_table
 from analytic.motions.spectra import rebuild
 from specimens.constants import G
 from specimens.io import atomic_path
@@ -90,29 +90,28 @@ def _png(fig) -> str:
     return base64.b64encode(buf.getvalue()).decode()
 
 
-_KIND = {"activation": "activation (no q)", "linear": "linear (q)", "non-linear": "displacement"}
-
-
 def _checks_table(checks: list[dict], limit_states: dict | None = None) -> str:
-    """The checks side by side: each with its demand, capacity and safety index; the convention rows
-    (activation against a life-safety hazard) marked as such; each limit state's governing check."""
-    def demand(c):
-        if c["kind"] == "non-linear":
-            return f"d {c['demand_displacement'] * 1e3:.4g} mm vs d_u* {c['d_u_star'] * 1e3:.4g} mm (T_s {c['period']:.3f} s)"
-        return f"a {c['demand_acceleration'] / G:.4f} g vs a0*/q {c['activation_acceleration'] / c.get('q', 1.0) / G:.4f} g"
-
+    """The checks as the code states them (:func:`analytic.codes.assessment.check_rows`): demand and
+    capacity as the clause compares them, the index capacity / demand, the verdict and the clause; each
+    limit state's governing check below."""
     rows = "".join(
-        f"<tr><td>{c['limit_state']} {_KIND.get(c['kind'], c['kind'])}"
-        f"{'' if c.get('code_check', True) else ' — convention a0*/PGA, not a code check'}</td>"
-        f"<td>{html.escape(c['where'])}</td><td>{demand(c)}</td>"
-        f"<td>{c['capacity_ag'] / G:.3f}</td><td>{c['demand_ag'] / G:.3f}</td><td>{c['safety_index']:.2f}</td>"
-        f"<td class='{'yes' if c['verified'] else 'no'}'>{'verified' if c['verified'] else 'NOT verified'}</td></tr>"
-        for c in checks)
-    gov = "".join(f"<li>{ls}: governing {_KIND.get(d['governing'], d['governing'])}, safety index "
-                  f"{d['safety_index']:.2f}</li>" for ls, d in (limit_states or {}).items())
-    return ("<div class='wrap'><table><tr><th>check</th><th>where</th><th>demand</th><th>capacity ag [g]</th>"
-            "<th>site ag [g]</th><th>safety index</th><th></th></tr>" + rows + "</table></div>"
+        f"<tr><td>{html.escape(r['limit_state'] + ' ' + r['check'])}</td><td>{html.escape(r['where'])}</td>"
+        f"<td>{html.escape(r['demand_symbol'] + ' ' + quantity_text(r['demand'], r['unit']))}</td>"
+        f"<td>{html.escape(r['capacity_symbol'] + ' ' + quantity_text(r['capacity'], r['unit']))}</td>"
+        f"<td>{index_text(r['safety_index'])}</td>"
+        f"<td class='{'yes' if r['verified'] else 'no'}'>{r['verdict']}</td><td>{html.escape(r['clause'])}</td></tr>"
+        for r in check_rows(checks))
+    gov = "".join(f"<li>{ls}: governing {html.escape(d['governing'])}, safety index {index_text(d['safety_index'])} "
+                  f"({'verified' if d['verified'] else 'not verified'})</li>" for ls, d in (limit_states or {}).items())
+    return ("<div class='wrap'><table><tr><th>check</th><th>where</th><th>demand</th><th>capacity</th>"
+            "<th>safety index (capacity / demand)</th><th>verdict</th><th>clause</th></tr>" + rows + "</table></div>"
             + (f"<ul>{gov}</ul>" if gov else ""))
+
+
+def _site_table(site) -> str:
+    """The site's spectrum as a table (:func:`analytic.codes.assessment.site_table`), not raw JSON."""
+    return ("<table>" + "".join(f"<tr><td>{html.escape(k)}</td><td>{html.escape(v)}</td></tr>"
+                                for k, v in site_table(site)) + "</table>")
 
 
 def _calculation(trail: list[dict]) -> str:
@@ -170,19 +169,20 @@ def _figures_table(d: dict) -> str:
 def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, frp_out: dict | None = None) -> None:
     """One self-contained HTML page: site, mechanism, figures, checks, the verdict (never overwrites)."""
     chk = next((x for x in res.checks if x["kind"] == "non-linear"), None)
-    verdict = (f"<p>Governing safety index <b>{res.safety_index:.2f}</b> ({html.escape(out['governing_check'])}): "
-               f"<span class='{'yes' if res.verified else 'no'}'>{'verified' if res.verified else 'NOT verified'}"
+    verdict = (f"<p>Governing safety index <b>{index_text(res.safety_index)}</b> ({html.escape(out['governing_check'])}): "
+               f"<span class='{'yes' if res.verified else 'no'}'>{'verified' if res.verified else 'not verified'}"
                f"</span>.</p>")
     parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>archdem assessment {html.escape(label)}"
              f"</title><style>{_CSS}</style></head><body><h1>Seismic assessment — {html.escape(label)}</h1>", verdict,
-             "<p class='meta'>Site: " + html.escape(json.dumps(out["spectrum"])) + "</p>",
+             "<h2>Site</h2>", _site_table(site),
              "<p class='meta'>Mechanism: " + html.escape(mech.label) + ", hinges "
              + html.escape(hinges_text(out["mechanism"].get("hinges", [])))
              + "</p>", "<h2>Unreinforced</h2>", _figures_table(out), _checks_table(out["checks"], out["limit_states"]),
-             "<p class='meta'>Conventions: the activation check has no behaviour factor (SLD: against the SLD "
-             "hazard); the linear check divides the activation by q against the SLV hazard; an index quoted as "
-             "a0*/PGA is the activation against the life-safety hazard's PGA on rock, reported here as a "
-             "convention, not a code check.</p>"]
+             "<p class='meta'>Each check compares a demand with a capacity as its clause does; the safety index "
+             "is capacity / demand and the check passes at 1 or more. The activation check has no behaviour factor "
+             "(SLD: against the SLD hazard); the linear check compares q a0* with the SLV hazard's ag S; an index "
+             "quoted as a0*/PGA is the activation against the life-safety hazard, reported as a convention, not a "
+             "code check.</p>"]
     if frp is not None and frp_out is not None:
         what = []
         if frp_out.get("strips"):

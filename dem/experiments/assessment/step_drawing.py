@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from analytic.codes.assessment import index_text
 from analytic.limit.limit_discrete import solve_lp
 from analytic.motions.spectra import ec8
 from dem.common.campaign import CampaignContext, pct, write_csv
@@ -38,15 +39,15 @@ def step_drawing(ctx: CampaignContext, d: Path) -> dict:
     write_csv(d / "drawing.csv", rows)
     site = ec8(DRAWING_SITE_AG_G * G)
     a = assess_with_records(asm, (), site).assessment.describe()
-    assess_rows = [{k: c.get(k) for k in ("limit_state", "kind", "q", "capacity_pga", "demand_pga", "safety_index",
-                                          "verified", "code_check")} for c in a["checks"]]
+    assess_rows = [{k: c[k] for k in ("limit_state", "kind", "check", "demand_symbol", "demand", "capacity_symbol", "capacity",
+                                      "unit", "safety_index", "verdict", "code_check", "clause")} for c in a["check_rows"]]
     write_csv(d / "drawing-assessment.csv", assess_rows)
     save_drawing(asm, d / "drawing.png", title=f"{label}: the blocks and joints as read")
     ns = rows[0]
     findings = [f"{label}: {len(asm.bodies)} blocks, {len(asm.joints)} joints read; DEM no-sliding tilt "
                 f"{ns['lambda_dem']:.4f} against the LP's {ns['lambda_lp']:.4f} ({ns['err_dem_vs_lp_pct']:+.2f} %).",
                 f"Code checks at a_g {DRAWING_SITE_AG_G:g} g (EN 1998-1, ground A): safety index "
-                f"{a['safety_index']:.2f}, governed by the {a['governing_check']} check "
+                f"{index_text(a['safety_index'])}, governed by the {a['governing_check']} check "
                 f"({'verified' if a['verified'] else 'not verified'})."]
     tables = [{"name": "drawing", "title": "The drawing's tilt: LP and DEM", "csv": "drawing/drawing.csv"},
               {"name": "drawing-assessment", "title": f"The drawing's code checks (EN 1998-1, a_g {DRAWING_SITE_AG_G:g} g)",

@@ -6,6 +6,7 @@ import argparse
 
 from dem.common.options import default_of, figure_file, print_json, workers_option
 from dem.core.engines import available_engines
+from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.compare_engines.run import FRICTIONS, compare, summary
 from specimens.catalogue import select_specimens
@@ -26,7 +27,8 @@ def _run(args: argparse.Namespace) -> int:
     base = Settings() if args.dt is None else Settings(dt=args.dt)
     if args.plot:
         figure_file(args.plot)
-    rows = compare(ids, args.config, engines, frictions, base, workers=args.workers)
+    with terminal("compare-engines", unit="specimens", enabled=not args.json) as line:
+        rows = compare(ids, args.config, engines, frictions, base, workers=args.workers, progress=line)
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.compare_engines.figure import save_engine_comparison

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 from dem.core.provenance import engine_version
 from dem.core.model import from_assembly
+from dem.core.progress import Progress
 from dem.core.settings import Settings
 from dem.experiments.tilt.check import TiltCheck, check_result, reference_lp
 from dem.experiments.tilt.run import tilt
@@ -113,14 +114,26 @@ def _one(args) -> list[ComparisonRow]:
 
 def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
             frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
-            workers: int = 1) -> list[ComparisonRow]:
-    """:func:`compare_specimen` for each id (in ``workers`` processes), rows in input order."""
+            workers: int = 1, progress: Progress | None = None) -> list[ComparisonRow]:
+    """:func:`compare_specimen` for each id (in ``workers`` processes), rows in input order.
+    ``progress(done, total, note)``: called as each specimen is done, in input order (:mod:`dem.core.progress`)."""
     jobs = [(sid, config, tuple(engines), tuple(frictions), base) for sid in ids]
+    out: list = []
+
+    def done(rows: list) -> None:
+        out.append(rows)
+        if progress is not None:
+            progress(len(out), len(jobs), f"{jobs[len(out) - 1][0]} done")
+
+    if progress is not None:
+        progress(0, len(jobs), f"{len(engines) * len(frictions)} tilts each")
     if workers <= 1 or len(jobs) <= 1:
-        out = [_one(j) for j in jobs]
+        for j in jobs:
+            done(_one(j))
     else:
         with ProcessPoolExecutor(min(workers, len(jobs)), initializer=die_with_parent) as ex:
-            out = list(ex.map(_one, jobs))
+            for rows in ex.map(_one, jobs):
+                done(rows)
     return [r for rows in out for r in rows]
 
 

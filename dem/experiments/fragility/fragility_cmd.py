@@ -28,6 +28,7 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.model import from_assembly, single_block
+from dem.core.progress import terminal
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.fragility.run import (
     DEFAULT_EDGE_LOSS_SD,
@@ -131,8 +132,9 @@ def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dic
     out = {}
     for (name, _, items), f in zip(groups, info["freqs"]):
         amps = [a for a, _ in items]
-        r = threshold(model, f, Settings(**settings), ShakeProtocol(), a_min_g=0.5 * amps[0],
-                      a_max_g=2.0 * amps[-1], workers=args.workers, scheduler=args.scheduler)
+        with terminal(f"deterministic threshold {f:g} Hz", unit="runs", enabled=not args.json) as line:
+            r = threshold(model, f, Settings(**settings), ShakeProtocol(), a_min_g=0.5 * amps[0],
+                          a_max_g=2.0 * amps[-1], workers=args.workers, scheduler=args.scheduler, progress=line)
         out[name] = r.amplitude_g
     return out
 

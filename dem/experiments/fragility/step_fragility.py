@@ -12,6 +12,7 @@ from analytic.rocking.domain import failure_domain
 from analytic.rocking.linkage import minimised_four_bar
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.core.model import as_model
+from dem.core.progress import terminal
 from dem.experiments.fragility.figure import fragility_figure
 from dem.experiments.fragility.file import write_tables
 from dem.experiments.fragility.run import (
@@ -60,11 +61,12 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
             lo, hi, step = GRIDS[f]
             amps = [round(k * lam, 4) for k in np.arange(lo, hi + 1e-9, step)]
             groups.append((f"{f:g} Hz", "g", [(a, sine_spec(f, a)) for a in amps]))
-            det[f"{f:g} Hz"] = threshold(model, f, dyn, ShakeProtocol(), a_min_g=lam,
-                                         a_max_g=2 * amps[-1], workers=ctx.workers, scheduler=ctx.scheduler).amplitude_g
+            with terminal(f"[fragility] {s.id} {f:g} Hz threshold", unit="runs") as line:
+                det[f"{f:g} Hz"] = threshold(model, f, dyn, ShakeProtocol(), a_min_g=lam, a_max_g=2 * amps[-1],
+                                             workers=ctx.workers, scheduler=ctx.scheduler, progress=line).amplitude_g
         res = fragility(s.id, arch_structure(s.arch, ctx.config), settings, pert, groups, n, 1,
                         studies_dir(ctx) / f"fragility-{s.id}.h5", workers=ctx.workers, scheduler=ctx.scheduler,
-                        resume=True, progress=False, deterministic=det)
+                        resume=True, progress=True, deterministic=det)
         write_tables(res, d / f"fragility-{s.id}.h5")
         fig = fragility_figure(res)
         fig.savefig(d / f"fragility-{s.id}.png", dpi=120)

@@ -11,6 +11,7 @@ from analytic.motions.inputs import SampledMotion
 from analytic.motions.records import baseline_correct, read_record, with_zero_tail
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import as_model
+from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.shake.run import ShakeProtocol
 from dem.experiments.shake.thresholds import static_onset, threshold
@@ -65,9 +66,10 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
     for s in specs:
         model = as_model(s, config=ctx.config, contact=ctx.contact_of(s))
         lam = static_onset(model, Settings(mu_joint=REFERENCE_MU_JOINT, mu_base=REFERENCE_MU_BASE))
-        r = threshold(model, 1.0, ctx.dynamics_of(s), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
-                      tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
-                      motion_fn=RecordAtPGA(str(path), t0, t1))
+        with terminal(f"[record] {s.id}", unit="runs") as line:
+            r = threshold(model, 1.0, ctx.dynamics_of(s), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
+                          tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
+                          motion_fn=RecordAtPGA(str(path), t0, t1), progress=line)
         a = r.amplitude_g
         rows.append({"id": s.id, "record": RECORD_FILE, "window_s": f"{t0:.2f}-{t1:.2f}", "pga_record_g": full.pga / G,
                      "lambda_static": lam, "collapse_pga_g": a if a is not None else float("nan"),

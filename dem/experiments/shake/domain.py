@@ -7,6 +7,7 @@ from typing import Sequence
 
 from analytic.rocking.domain import failure_domain as linkage_domain
 from dem.core.model import as_model
+from dem.core.progress import Progress
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake import thresholds
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
@@ -17,7 +18,7 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
                        mu_base: float | None = None, a_max_ratio: float = 6.0, scan_ratio: float = 1.15,
                        tol: float = 0.01, workers: int | None = None, disc_kw: dict | None = None,
                        settings=None, protocol=None, scheduler: str | None = None, joints: dict | None = None,
-                       engine: str | None = None, dt: float | None = None) -> dict:
+                       engine: str | None = None, dt: float | None = None, progress: Progress | None = None) -> dict:
     """DEM failure domain of ``arch`` (one-cycle plain sines at ``freqs`` [Hz]).
 
     The amplitude scan runs from the static onset ``lambda g`` (LP with the same friction;
@@ -25,7 +26,8 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
     :func:`dem.experiments.shake.thresholds.failure_domain` plus ``id``, ``lambda``, ``config``, ``mu_joint``, ``mu_base``.
     ``joints``: contact-law fields of :class:`dem.core.settings.Settings` (rigid if None); ``engine``
     and ``dt`` [s]: the physics engine and its time step (defaults: the settings'); all three unless
-    ``settings`` is given.
+    ``settings`` is given. ``progress(done, total, note)``: called as each frequency's threshold is found
+    (:mod:`dem.core.progress`).
     """
     mu_j = REFERENCE_MU_JOINT if mu_joint is None else float(mu_joint)
     mu_b = REFERENCE_MU_BASE if mu_base is None else float(mu_base)
@@ -36,7 +38,7 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
     run = {k: v for k, v in (("engine", engine), ("dt", dt)) if v is not None}
     st = settings or dynamics_settings(mu_joint=mu_j, mu_base=mu_b, **(joints or {}), **run)
     out = thresholds.failure_domain(model, freqs, st, protocol, workers=workers, a_min_g=lam, a_max_g=a_max_ratio * lam,
-                         scan_ratio=scan_ratio, tol=tol, scheduler=scheduler)
+                         scan_ratio=scan_ratio, tol=tol, scheduler=scheduler, progress=progress)
     out.update({"id": label, "lambda": lam, "config": config, "mu_joint": mu_j, "mu_base": mu_b,
                 "physics_engine": st.engine, "dt": st.dt,
                 "input": "sine0", "a_range_g": [lam, a_max_ratio * lam]})

@@ -26,6 +26,7 @@ from dem.common.options import (
     workers_option,
 )
 from dem.core.engines import available_engines, check_engine
+from dem.core.progress import terminal
 from dem.core.settings import DYNAMICS_ENGINE
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.step_shake import SHAKE_FREQS
@@ -242,11 +243,12 @@ def dem_domain(args: argparse.Namespace) -> int:
     a_max = getattr(args, "amax", dem_a_max)
     # the analytic default (failure_domain's a_max_ratio) is too costly here: the DEM's own default instead
     a_max = dem_a_max if a_max is None or a_max == default_of(failure_domain, "a_max_ratio") else float(a_max)
-    res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
-                             getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
-                             workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
-                             scheduler=getattr(args, "scheduler", None), joints=law or None, engine=args.engine,
-                             dt=getattr(args, "dt", None))
+    with terminal(f"domain {label}", unit="frequencies", enabled=not args.json) as line:
+        res = dem_failure_domain(label, arch, freqs, getattr(args, "config", None) or default_of(dem_failure_domain, "config"),
+                                 getattr(args, "mu_joint", None), getattr(args, "mu_base", None), a_max_ratio=a_max,
+                                 workers=getattr(args, "workers", None), disc_kw=discretisation_kwargs(args, arch),
+                                 scheduler=getattr(args, "scheduler", None), joints=law or None, engine=args.engine,
+                                 dt=getattr(args, "dt", None), progress=line)
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
         from dem.experiments.shake.figure import plot_domain_over_analytic

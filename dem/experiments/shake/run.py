@@ -47,7 +47,9 @@ import numpy as np
 from analytic.motions.inputs import GroundMotion
 from dem.core import detect
 from dem.core.loads import GroundShake
+from dem.core.engines import get_engine
 from dem.core.model import Model, as_model
+from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings, dynamics_settings
 from dem.core.simulate import SimResult, simulate
 from specimens.constants import G
@@ -210,11 +212,13 @@ def first_rebound(t: np.ndarray, u: np.ndarray, onset: float) -> tuple[float | N
 
 
 def shake(target, motion: GroundMotion, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
-          label: str | None = None, friction_work: bool = True, config: str = "glued") -> ShakeResult:
+          label: str | None = None, friction_work: bool = True, config: str = "glued",
+          progress: Progress | None = None) -> ShakeResult:
     """Run ``motion`` (ground acceleration [m/s^2], +x; :func:`analytic.motions.records.ground_motion` builds
     one in g) on ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model, see
     :func:`dem.core.model.as_model`); see the module docstring. ``friction_work=False`` skips the
-    contact-force readout behind the friction work (NaN then)."""
+    contact-force readout behind the friction work (NaN then). ``progress(done, total, note)``: called as
+    the run advances (:mod:`dem.core.progress`; ``done`` and ``total`` simulated seconds, rounded to 0.01 s)."""
     model = as_model(target, config=config)
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
@@ -227,8 +231,17 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
     rest = None
     if proto.rest_after is not None:
         rest = (float(motion.duration) + proto.rest_after, proto.rest_window, proto.rest_span * model.size)
+    engine = None
+    if progress is not None:
+        total = round(duration, 2)
+        progress(0.0, total, "input")
+        engine = TimedEngine(get_engine(st.engine), st.dt,
+                             lambda t: progress(round(t, 2), total, "input" if t < motion.duration else "tail"))
     sim = simulate(model, st, load, duration, record_every=st.record_every, stop_on_collapse=proto.stop_on_collapse,
-                   friction_work=friction_work, rest=rest, rest_span=True)
+                   friction_work=friction_work, rest=rest, rest_span=True, engine=engine)
+    if progress is not None:
+        progress(round(sim.steps * st.dt, 2), round(sim.steps * st.dt, 2),
+                 "collapsed" if sim.collapsed else ("at rest" if not math.isnan(sim.t_rest) else "end"))
     u = crown_displacement(model, sim)
     t_start, t_reb = first_rebound(sim.history.t, u, proto.onset_mm * 1e-3)
     phase = None

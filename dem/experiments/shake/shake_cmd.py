@@ -24,6 +24,7 @@ from dem.common.options import (
     writable_dir,
 )
 from dem.core.model import from_assembly
+from dem.core.progress import terminal
 from dem.core.settings import dynamics_settings
 from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_SIMULATED_S, ShakeProtocol, shake
 from specimens.blocks import discretise
@@ -88,7 +89,8 @@ def _run_shake(args: argparse.Namespace) -> int:
     if total > ANNOUNCE_SIMULATED_S:
         print(f"archdem: simulating up to {total:g} s of motion and tail ({math.ceil(total / settings.dt)} steps of "
               f"{settings.dt:g} s)" + ("" if args.full else "; stops at collapse, or once at rest after the motion"), file=sys.stderr)
-    res = shake(model, motion, settings, proto, label=label)
+    with terminal(f"shake {label}", unit="s simulated", enabled=not args.json) as line:
+        res = shake(model, motion, settings, proto, label=label, progress=line)
     stem = f"shake-{label}-{args.config}-" + (f"sine{args.sine:g}Hz-{args.amplitude:g}g" if args.sine else "record")
     path = save_shake(res, unique_run_path(writable_dir(args.out), stem))
     if args.plot:

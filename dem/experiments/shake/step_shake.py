@@ -9,6 +9,7 @@ import numpy as np
 from analytic.motions.inputs import SinePulse
 from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import from_assembly
+from dem.core.progress import terminal
 from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from dem.experiments.shake.run import shake
 from specimens.blocks import discretise
@@ -46,9 +47,11 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
     rows, figures = [], []
     for s in specs:
         c = ctx.contact_of(s)
-        dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
-                                 settings=ctx.dynamics_of(s), disc_kw={"contact": c} if c != 1.0 else None,
-                                 a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01)
+        with terminal(f"[shake] {s.id}", unit="frequencies") as line:
+            dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
+                                     settings=ctx.dynamics_of(s), disc_kw={"contact": c} if c != 1.0 else None,
+                                     a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01,
+                                     progress=line)
         ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))
         fb, tb = _lowest_threshold(ana.get("four-bar")), _lowest_threshold(ana.get("two-bar"))
         for t in dem["thresholds"]:

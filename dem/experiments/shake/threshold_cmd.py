@@ -6,6 +6,7 @@ import argparse
 import math
 
 from dem.common.options import default_of, print_json, workers_option
+from dem.core.progress import terminal
 from dem.experiments.shake.run import ShakeProtocol
 from dem.experiments.shake.shake_cmd import (
     MAX_AMPLITUDE_G,
@@ -29,9 +30,10 @@ def _run_threshold(args: argparse.Namespace) -> int:
         raise ArchdemInputError(f"--scan-ratio must be in (1, 10], got {args.scan_ratio:g}")
     if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
         raise ArchdemInputError(f"--tol must be a relative tolerance in [0.001, 0.5], got {args.tol}")
-    res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
-                    a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers,
-                    scheduler=args.scheduler)
+    with terminal(f"threshold {label} {args.sine:g} Hz", unit="runs", enabled=not args.json) as line:
+        res = threshold(model, args.sine, settings, ShakeProtocol(tail=args.tail, load=args.load), a_min_g=args.a_min,
+                        a_max_g=args.a_max, scan_ratio=args.scan_ratio, tol=args.tol, workers=args.workers,
+                        scheduler=args.scheduler, progress=line)
     a_max = res.a_range_g[1]
     s = {"id": label, "lambda": lam, "config": args.config, "contact": model.source.get("contact", 1.0),
          "mu_joint": settings.mu_joint, "mu_base": settings.mu_base, **res.summary()}

@@ -37,6 +37,7 @@ import numpy as np
 from analytic.motions.inputs import GroundMotion, SinePulse
 from analytic.search import Bracket, search
 from dem.core.model import Model, as_model
+from dem.core.progress import Progress
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, collapses
 from specimens.constants import G
@@ -121,14 +122,49 @@ def scan_grid(a_min_g: float, a_max_g: float, ratio: float) -> np.ndarray:
     return np.geomspace(a_min_g, a_max_g, max(n, 2))
 
 
-def _map(fn, jobs: list, workers: int, scheduler: str | None = None) -> list:
+def _map(fn, jobs: list, workers: int, scheduler: str | None = None, on_done: Callable | None = None) -> list:
+    """``[fn(j) for j in jobs]``, on ``workers`` processes (or a Dask ``scheduler``); ``on_done(k, result)``
+    as each finishes."""
+    out: list = [None] * len(jobs)
     if not scheduler and (workers <= 1 or len(jobs) <= 1):
-        return [fn(j) for j in jobs]
+        for k, j in enumerate(jobs):
+            out[k] = fn(j)
+            if on_done is not None:
+                on_done(k, out[k])
+        return out
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import executor
 
     with executor(min(workers, len(jobs)), scheduler) as (ex, _):
-        return list(ex.map(fn, jobs))
+        running = {ex.submit(fn, j): k for k, j in enumerate(jobs)}
+        while running:
+            done, _ = wait(running, return_when=FIRST_COMPLETED)
+            for f in done:
+                k = running.pop(f)
+                out[k] = f.result()
+                if on_done is not None:
+                    on_done(k, out[k])
+    return out
+
+
+def bisections(scan_ratio: float, tol: float) -> int:
+    """Geometric bisections that narrow one scan step (``scan_ratio``) to ``hi / lo - 1 <= tol``."""
+    return max(0, math.ceil(math.log2(math.log(scan_ratio) / math.log1p(tol)) - 1e-9))
+
+
+class _RunProgress:
+    """The progress of a threshold search: runs done of those expected (the scan, then the bisections
+    of the lowest bracket), the amplitude just run and the bracket."""
+
+    def __init__(self, progress: Progress | None, n_scan: int, n_bisect: int):
+        self.progress, self.n_scan, self.n_bisect, self.done = progress, n_scan, n_bisect, 0
+
+    def ran(self, r: Outcome, bracket: str = "", total: int | None = None) -> None:
+        self.done += 1
+        if self.progress is not None:
+            total = self.n_scan + self.n_bisect if total is None else total
+            self.progress(self.done, max(total, self.done), f"{r.amplitude_g:.4f} g "
+                          f"{'collapsed' if r.collapsed else 'survived'}" + (f"; {bracket}" if bracket else ""))
 
 
 def _lowest_bracket(scan: list) -> int | None:
@@ -143,7 +179,8 @@ def _lowest_bracket(scan: list) -> int | None:
 
 
 def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, max_sims: int,
-                     scheduler: str | None = None) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
+                     scheduler: str | None = None, track: _RunProgress | None = None,
+                     ) -> tuple[list[Outcome], list[Outcome], tuple[float, float, Outcome] | None]:
     """Outcomes of the scan (in grid order) and of the bisection of its lowest survival ->
     collapse bracket (in order; geometric midpoints until ``hi / lo - 1 <= tol`` or ``max_sims``
     runs in all), and the final ``(lo, hi, run at hi)``; no bisection and None when the lowest
@@ -154,7 +191,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, 
     bisection no longer waits for the top of the scan, and no process idles behind its serial
     chain while scan amplitudes remain (the thresholds of the campaign: 11 rounds of simulations
     become about 9 on two cores). Every run is the one the serial order would make, so the
-    answer does not depend on the number of processes."""
+    answer does not depend on the number of processes. ``track``: told of every run as it ends."""
     n = len(grid)
     scan: list[Outcome | None] = [None] * n
     bis: list[Outcome] = []
@@ -171,15 +208,35 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, 
             return bracket.mid()
         return None
 
+    def told(r: Outcome) -> None:
+        if track is None:
+            return
+        if bracket is not None:
+            # the bisections still to come, once the lowest bracket is known
+            left = bisections(bracket.hi / bracket.lo, tol) if bracket.wide() else 0
+            total = n + len(bis) + min(left, max_sims - n - len(bis))
+            track.ran(r, f"bracket [{bracket.lo:.4f}, {bracket.hi:.4f}] g", total)
+        elif (k := _lowest_bracket(scan)) is not None and k <= 0:  # nothing to bisect: the scan is all
+            track.ran(r, "", n)
+        else:
+            track.ran(r)
+
+    def scanned(i: int, r: Outcome) -> None:
+        scan[i] = r
+        next_mid()  # the bracket, as soon as it is known
+        told(r)
+
     def take(r: Outcome) -> None:
         bis.append(r)
         bracket.take(r.amplitude_g, r.collapsed, r)
+        told(r)
 
     def result():
         return list(scan), bis, None if bracket is None else (bracket.lo, bracket.hi, bracket.hi_run)
 
     if workers <= 1 and not scheduler:
-        scan = [_run_one(job(a)) for a in grid]
+        for i, a in enumerate(grid):
+            scanned(i, _run_one(job(a)))
         while (mid := next_mid()) is not None:
             take(_run_one(job(mid)))
         return result()
@@ -207,7 +264,7 @@ def _scan_and_bisect(grid: np.ndarray, job: Callable, workers: int, tol: float, 
                 if i is None:
                     take(f.result())
                 else:
-                    scan[i] = f.result()
+                    scanned(i, f.result())
 
 
 def _bands(runs: Sequence[Outcome], first: float | None) -> tuple[dict, ...]:
@@ -245,12 +302,15 @@ def static_onset(model: Model, settings: Settings) -> float:
 def threshold(target, freq: float, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
               a_min_g: float | None = None, a_max_g: float | None = None, scan_ratio: float = 1.15, tol: float = 0.01,
               workers: int | None = None, motion_fn: Callable[[float, float], GroundMotion] = sine_motion,
-              max_sims: int = 60, config: str = "glued", scheduler: str | None = None) -> ThresholdResult:
+              max_sims: int = 60, config: str = "glued", scheduler: str | None = None,
+              progress: Progress | None = None) -> ThresholdResult:
     """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target`` (a specimen id,
     Specimen, PointedArch, Assembly or Model, see :func:`dem.core.model.as_model`); see the module
     docstring. The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`;
     nothing moves below it) to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``); ``workers``: processes for the
     scan (default all cores, 1 = serial); ``scheduler``: a Dask scheduler address to run on instead.
+    ``progress(done, total, note)``: called as each run ends (:mod:`dem.core.progress`; ``done`` runs of
+    ``total`` expected, ``note`` the amplitude, its outcome and the bracket).
     """
     model = as_model(target, config=config)
     if not (math.isfinite(freq) and freq > 0):
@@ -265,7 +325,10 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
     a_max_g = SCAN_TOP * a_min_g if a_max_g is None else a_max_g
     grid = scan_grid(a_min_g, a_max_g, scan_ratio)
     job = lambda a: (model, settings, protocol, motion_fn, float(a), float(freq))  # noqa: E731
-    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims, scheduler)
+    track = _RunProgress(progress, len(grid), bisections(scan_ratio, tol))
+    if progress is not None:
+        progress(0, track.n_scan + track.n_bisect, f"scan {a_min_g:.4f}-{a_max_g:.4f} g")
+    scan, bis, bracket = _scan_and_bisect(grid, job, workers, tol, max_sims, scheduler, track)
     runs = scan + bis
     if not any(r.collapsed for r in scan):
         return ThresholdResult(float(freq), None, None, _bands(runs, None), tuple(runs), scan_ratio, tol,
@@ -276,9 +339,17 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
                                scan_ratio, tol, time.perf_counter() - wall0, hi_r.mode, hi_r.phase, a_range_g=(a_min_g, a_max_g))
     # the lowest scanned amplitude collapses: step down (at most 6 times) until something survives, then bisect
 
+    ends: list[float] = []  # the bracket being bisected, once found
+
     def run(a: float) -> Outcome:
         r = _run_one(job(a))
         runs.append(r)
+        if not ends:
+            track.ran(r, "stepping down below the scan", len(runs) + 1 + track.n_bisect)
+            return r
+        ends[r.collapsed] = a
+        left = bisections(ends[1] / ends[0], tol) if ends[1] / ends[0] - 1 > tol else 0
+        track.ran(r, f"bracket [{ends[0]:.4f}, {ends[1]:.4f}] g", min(len(runs) + left, max_sims))
         return r
 
     a0 = scan[0].amplitude_g
@@ -286,6 +357,7 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
                    down=lambda a: a / scan_ratio, ends="first", max_down=6)  # tol inf: find the bracket only
     if below.status == "no_lower":
         raise ArchdemInputError(f"collapse at every amplitude down to {below.hi:.4g} g; lower --a-min")
+    ends += [below.lo, below.hi]
     res = search(run, below.lo, below.hi, tol, rule="ratio", geometric=True, is_upper=lambda r: r.collapsed,
                  lo_run=below.lo_run, hi_run=below.hi_run, max_runs=max_sims - len(runs))
     lo, hi, hi_r = res.lo, res.hi, res.hi_run
@@ -294,18 +366,20 @@ def threshold(target, freq: float, settings: Settings | None = None, protocol: S
 
 
 def _threshold_job(args) -> ThresholdResult:
+    # a threshold at one frequency of a domain: its runs are not reported one by one (it may run in a worker)
     model, freq, settings, protocol, kw = args
     return threshold(model, freq, settings, protocol, workers=1, **kw)
 
 
 def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | None = None,
                    protocol: ShakeProtocol | None = None, workers: int | None = None, scheduler: str | None = None,
-                   **kw) -> dict:
+                   progress: Progress | None = None, **kw) -> dict:
     """DEM failure domain: :func:`threshold` at every frequency [Hz], in parallel over the grid
     (``workers`` processes, default all cores; or a Dask ``scheduler``). ``kw`` go to :func:`threshold` (amplitude range,
     scan ratio, tol). Returns a dict shaped like the analytic domain JSON: ``points`` (``x`` [Hz],
     ``amplitude_g``, ``mode``: the collapse phase mapped to the analytic names), ``bands``
-    (``x``, ``from_g``, ``to_g``, ``outcome``, ``collapse``) and ``thresholds`` (full summaries)."""
+    (``x``, ``from_g``, ``to_g``, ``outcome``, ``collapse``) and ``thresholds`` (full summaries).
+    ``progress(done, total, note)``: called as each frequency's threshold is found (:mod:`dem.core.progress`)."""
     freqs = [float(f) for f in freqs]
     if not freqs or not all(math.isfinite(f) and f > 0 for f in freqs):
         raise ArchdemInputError("the frequency grid must contain positive numbers")
@@ -313,7 +387,18 @@ def failure_domain(model: Model, freqs: Sequence[float], settings: Settings | No
     protocol = protocol or ShakeProtocol()
     workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()
-    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers, scheduler)
+    n_done = 0
+
+    def done(k: int, r: ThresholdResult) -> None:
+        nonlocal n_done
+        n_done += 1
+        a = "no collapse" if r.amplitude_g is None else f"{r.amplitude_g:.4f} g"
+        progress(n_done, len(freqs), f"{r.freq:g} Hz: {a}")
+
+    if progress is not None:
+        progress(0, len(freqs), f"{len(freqs)} frequencies")
+    res = _map(_threshold_job, [(model, f, settings, protocol, kw) for f in freqs], workers, scheduler,
+               None if progress is None else done)
     names = {"before-first-rebound": "first-half-cycle", "after-first-rebound": "after-impact"}
     points, bands = [], []
     for r in res:

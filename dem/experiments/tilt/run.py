@@ -32,7 +32,9 @@ from typing import Callable
 from analytic.search import search
 from dem.core import detect
 from dem.core.loads import TiltHold, TiltRamp, TiltStairs
+from dem.core.engines import get_engine
 from dem.core.model import Model, as_model
+from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
 from dem.experiments.tilt.check import LpCheck, lp_check, prevents_sliding
@@ -217,26 +219,67 @@ def scaled(proto: TiltProtocol, settings: Settings, s: float) -> tuple[TiltProto
     return replace(proto, time_scale=float(s)), settings
 
 
-def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float) -> SimResult:
+def hold_level(model: Model, settings: Settings, proto: TiltProtocol, lam: float, engine=None) -> SimResult:
     """One simulation of the hold protocol: smooth ramp to ``lam`` over ``proto.ramp_time``,
-    then held ``proto.hold_time`` [s], or less if the blocks come to rest (``proto.rest_after``)."""
+    then held ``proto.hold_time`` [s], or less if the blocks come to rest (``proto.rest_after``).
+    ``engine``: an unbuilt backend (default: ``settings.engine``'s)."""
     rest = None
     if proto.rest_after is not None and proto.rest_after < proto.hold_time:
         rest = (proto.ramp_time + proto.rest_after, proto.rest_window, proto.rest_growth * model.size)
     return simulate(model, settings, TiltHold(lam, proto.ramp_time, g=settings.g), proto.ramp_time + proto.hold_time,
-                    rest=rest)
+                    rest=rest, engine=engine)
+
+
+class _LevelProgress:
+    """The progress of a hold search: the simulations run, the bracket as :func:`analytic.search.search`
+    moves it (an end not run yet marked ``?``), the simulations it still needs, the simulated time of the
+    running one."""
+
+    def __init__(self, progress: Progress, proto: TiltProtocol, lo: float, hi: float, up: float, down: float, done: int):
+        self.progress, self.proto, self.up, self.down = progress, proto, up, down
+        self.lo, self.hi, self.lo_run, self.hi_run, self.done = lo, hi, False, False, done
+
+    def left(self) -> int:
+        """Simulations still expected: the bisections to the tolerance, then any end not run."""
+        if self.hi - self.lo > self.proto.tol * self.hi:
+            return max(1, math.ceil(math.log2((self.hi - self.lo) / (self.proto.tol * self.hi))))
+        return (not self.lo_run) + (not self.hi_run)
+
+    def bracket(self) -> str:
+        return f"bracket [{self.lo:.4f}{'' if self.lo_run else '?'}, {self.hi:.4f}{'' if self.hi_run else '?'}]"
+
+    def running(self, lam: float, t: float | None = None) -> None:
+        now = "" if t is None else f" {t:.1f}/{self.proto.ramp_time + self.proto.hold_time:.1f} s"
+        self.progress(self.done, self.done + self.left(), f"level {lam:.4f}{now}; {self.bracket()}")
+
+    def ran(self, lam: float, collapsed: bool) -> None:
+        """Move the bracket as the search does (a wrong guessed end moves outward)."""
+        if collapsed and lam <= self.lo:
+            self.hi, self.hi_run, self.lo, self.lo_run = lam, True, lam * self.down, False
+        elif not collapsed and lam >= self.hi:
+            self.lo, self.lo_run, self.hi, self.hi_run = lam, True, lam * self.up, False
+        elif collapsed:
+            self.hi, self.hi_run = lam, True
+        else:
+            self.lo, self.lo_run = lam, True
+        self.done += 1
+        self.progress(self.done, self.done + self.left(),
+                      f"level {lam:.4f} {'collapsed' if collapsed else 'held'}; {self.bracket()}")
 
 
 def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None = None,
          label: str | None = None, assembly=None, config: str = "glued",
-         on_level: Callable[[float, SimResult], None] | None = None, check: bool = True) -> TiltResult:
+         on_level: Callable[[float, SimResult], None] | None = None, check: bool = True,
+         progress: Progress | None = None) -> TiltResult:
     """Tilt test of ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model: see
     :func:`dem.core.model.as_model`, which cuts an arch in the ``config`` configuration); see the
     module docstring. ``assembly``: the blocks the model was built from (default: the model's own),
     needed by a hold protocol with ``start="lp"`` and used by ``start="auto"`` (the default; the
     ramp scan without it). The result's ``protocol`` holds the resolved start and, with the LP
     start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold).
-    ``check``: set the answer beside the LP of the same blocks (``lp_check``, with its warning)."""
+    ``check``: set the answer beside the LP of the same blocks (``lp_check``, with its warning).
+    ``progress(done, total, note)``: called as simulations start, advance and end (:mod:`dem.core.progress`;
+    ``done`` simulations, ``total`` the expected number, ``note`` the level and the bracket)."""
     model = as_model(target, config=config)
     assembly = model.assembly if assembly is None else assembly
     settings = settings or Settings()
@@ -250,17 +293,31 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
     if proto.kind == "hold" and proto.guess is None and proto.start == "lp":
         if assembly is None:
             raise ValueError("a tilt protocol with start='lp' needs the assembly of the model")
+        if progress is not None:
+            progress(0, None, "static LP of the blocks (first estimate)")
         lp = _static_lp(assembly, settings)
         proto = replace(proto, guess=_guess_of(lp))  # None (no LP): the ramp scan
     levels: list[tuple[float, bool]] = []
     collapse = stable = None
+
+    def engine(note: str, duration: float, total: int | None = 1):
+        """The backend of the one simulation of a scan, staircase or ramp: telling ``progress`` (if any) its
+        simulated time, out of ``duration`` [s] at most (it ends at collapse)."""
+        if progress is None:
+            return None
+        progress(0, total, note)
+        return TimedEngine(get_engine(settings.engine), settings.dt,
+                           lambda t: progress(0, total, f"{note} {t:.1f}/{duration:.1f} s"))
+
     if proto.kind == "hold":
         if proto.guess is not None:
             n = 0
             hi, lo = proto.guess_bracket[1] * proto.guess, proto.guess_bracket[0] * proto.guess
             up, down = GUESS_STEPS
         else:
-            scan = simulate(model, settings, TiltRamp(proto.scan_rate, g=settings.g), proto.lam_max / proto.scan_rate)
+            duration = proto.lam_max / proto.scan_rate
+            scan = simulate(model, settings, TiltRamp(proto.scan_rate, g=settings.g), duration,
+                            engine=engine("ramp scan for a first estimate:", duration, total=None))
             n = 1
             if not scan.collapsed:
                 raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
@@ -270,9 +327,18 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
             hi, lo = est, 0.85 * est
             up, down = 1.1, 0.85
 
+        track = _LevelProgress(progress, proto, lo, hi, up, down, n) if progress is not None else None
+
         def run(lam: float) -> SimResult:
-            r = hold_level(model, settings, proto, lam)
+            if track is None:
+                r = hold_level(model, settings, proto, lam)
+            else:
+                track.running(lam)
+                r = hold_level(model, settings, proto, lam, engine=TimedEngine(
+                    get_engine(settings.engine), settings.dt, lambda t: track.running(lam, t)))
             levels.append((lam, r.collapsed))
+            if track is not None:
+                track.ran(lam, r.collapsed)
             if on_level is not None:
                 on_level(lam, r)
             return r
@@ -290,7 +356,8 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
     elif proto.kind == "staircase":
         load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
         period = proto.stair_hold + load.rise
-        r = simulate(model, settings, load, period * math.ceil(proto.lam_max / proto.step))
+        duration = period * math.ceil(proto.lam_max / proto.step)
+        r = simulate(model, settings, load, duration, engine=engine("staircase:", duration))
         n = 1
         if not r.collapsed:
             raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
@@ -302,7 +369,8 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
         levels.append((lam, True))
         collapse, bracket = r, (proto.step * k, lam)
     else:
-        r = simulate(model, settings, TiltRamp(proto.rate, g=settings.g), proto.lam_max / proto.rate)
+        duration = proto.lam_max / proto.rate
+        r = simulate(model, settings, TiltRamp(proto.rate, g=settings.g), duration, engine=engine("ramp:", duration))
         n = 1
         if not r.collapsed:
             raise ArchdemInputError(f"no collapse up to lambda = {proto.lam_max:g}")
@@ -313,6 +381,8 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
         lam = proto.rate * t_on
         levels.append((lam, True))
         collapse, bracket = r, (proto.rate * max(t_on - settings.record_every, 0.0), lam)
+    if progress is not None:
+        progress(n, n, f"lambda = {lam:.4f}")
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 

@@ -50,7 +50,7 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
     studies = [ensemble_study(s.id, s.arch, Imperfection(cal.edge_loss, cal.edge_loss_sd if s.id in lab else 0.0),
                               n if s.id in lab else 1, LAB_SEED, studies_dir(ctx) / f"lab-{s.id}.h5", config=ctx.config,
                               engine=ctx.engine, law=ctx.law_of(s)) for s in tested + predicted]
-    ensembles = tilt_ensembles(studies, workers=ctx.workers, scheduler=ctx.scheduler, resume=True, progress=False)
+    ensembles = tilt_ensembles(studies, workers=ctx.workers, scheduler=ctx.scheduler, resume=True, progress=True)
     for s, ens in zip(tested + predicted, ensembles):
         t = lab.get(s.id)
         modes = Counter(ens.modes)

@@ -23,6 +23,7 @@ from dem.common.options import (
     writable_dir,
 )
 from dem.core.model import from_assembly
+from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, tilt
 from specimens.blocks import discretise
@@ -59,9 +60,10 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot:
         figure_file(args.plot)
     can_make_dir(args.out)
-    res = tilt(from_assembly(asm, name=label), settings, TiltProtocol(kind=args.protocol, start=args.start,
-                                                               **({"rest_after": None} if args.full_hold else {})),
-               label=label, assembly=asm)
+    with terminal(f"tilt {label}", enabled=not args.json) as line:
+        res = tilt(from_assembly(asm, name=label), settings,
+                   TiltProtocol(kind=args.protocol, start=args.start, **({"rest_after": None} if args.full_hold else {})),
+                   label=label, assembly=asm, progress=line)
     path = save_result(res, unique_run_path(writable_dir(args.out), f"tilt-{label}-{args.config}"))
     if args.plot:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)

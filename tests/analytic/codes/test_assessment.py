@@ -118,3 +118,44 @@ def test_the_noh_gumbad_pier_hinges_against_the_published_ones():
         assert abs(got[3] - pub[3]) <= 0.0355 and got[3] < 0  # the right pier's outer foot
         assert all(abs(g - p) <= 0.27 for g, p in zip(got[1:3], pub[1:3]))
         assert pub[0] > math.pi > got[0]  # the known difference, kept visible
+
+
+def test_index_text_keeps_three_decimals_and_never_crosses_one():
+    """0.995 is not 1.00; an index just below 1 prints more digits rather than "1.000"."""
+    from analytic.codes.assessment import index_text
+
+    assert index_text(0.995) == "0.995" and index_text(1.8511) == "1.851" and index_text(1.0) == "1.000"
+    assert index_text(0.99996) == "0.99996" and float(index_text(0.99996)) < 1
+    assert index_text(math.inf) == "inf"
+
+
+def test_quantities_in_one_unit_with_the_other_in_brackets():
+    from analytic.codes.assessment import quantity_text
+
+    assert quantity_text(2 * G, "m/s^2") == f"2.000 g ({2 * G:#.4g} m/s^2)" and quantity_text(0.127, "m") == "127.0 mm"
+
+
+def test_check_rows_state_the_clause_on_a_soil_whose_factor_follows_ag():
+    """NTC 2018 soil C at a height: each row's index is capacity / demand of its own pair (q a0* against the
+    floor's a_Z, a0* against it, d_u* against the demand displacement), the verdict index >= 1."""
+    from analytic.codes.assessment import check_rows, site_table
+    from analytic.codes.kinematic import Height
+    from analytic.motions.spectra import ntc2018
+
+    site = ntc2018(0.3 * G, 2.4, 0.3, "C")
+    r = assess(RockingBlock(0.05, 0.2), site,
+               height=Height(0.5, 0.3, 2), sld_site=ntc2018(0.1 * G, 2.4, 0.3, "C"))
+    rows = check_rows(r)
+    assert [(x["limit_state"], x["kind"]) for x in rows] == [("SLD", "activation"), ("SLV", "linear"),
+                                                              ("SLV", "non-linear")]
+    act, lin, dis = rows
+    assert lin["capacity"] == pytest.approx(2 * r.linear.a0_star) and act["capacity"] == r.linear.a0_star
+    assert lin["demand_symbol"] == "a_Z" and lin["unit"] == "m/s^2" and dis["unit"] == "m"
+    assert dis["capacity"] == r.checks[2]["d_u_star"] and dis["demand"] == r.checks[2]["demand_displacement"]
+    for x in rows:
+        assert x["safety_index"] == pytest.approx(x["capacity"] / x["demand"], rel=1e-12)
+        assert x["verdict"] == ("verified" if x["capacity"] >= x["demand"] else "not verified")
+        assert x["clause"].startswith("C8.7.1.2")
+    assert r.safety_index == min(x["safety_index"] for x in rows)
+    table = dict(site_table(site))
+    assert table["soil category"] == "C" and table["ag (on rock)"].startswith("0.3000 g (")

@@ -340,3 +340,30 @@ def test_a_motion_below_an_accelerometers_resolution_is_refused(values, scale, m
     with pytest.raises(ArchdemInputError, match="peaks at"):
         m.scaled(1e-9)
     assert m.scaled(2e-6 * G).pga == pytest.approx(2e-6 * G)  # just above the floor: a motion
+
+
+def test_the_shipped_example_record_is_the_documented_one_and_unknown_names_are_refused():
+    """The record examples use ships inside the package (they run from any folder): the same bytes as the
+    test data's copy, whose sha256 the data README documents."""
+    from analytic.motions.records import EXAMPLE_RECORDS, example_record
+
+    for name in EXAMPLE_RECORDS:
+        path = example_record(name)
+        assert path.is_file() and path.is_absolute()
+        assert hashlib.sha256(path.read_bytes()).hexdigest() == DOCUMENTED[name][-1]
+    assert example_record() == example_record("RSN77_SFERN_PUL164.AT2")
+    with pytest.raises(ArchdemInputError, match="no shipped record"):
+        example_record("NIS090.AT2")
+
+
+def test_the_shipped_record_is_declared_package_data():
+    """A wheel carries only the data files pyproject.toml declares: the example record must be among them."""
+    import tomllib
+
+    from analytic.motions.records import EXAMPLE_RECORDS, example_record
+
+    root = Path(__file__).resolve().parents[3]
+    globs = tomllib.loads((root / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["analytic"]
+    for name in EXAMPLE_RECORDS:
+        rel = example_record(name).relative_to(root / "analytic")
+        assert any(rel.match(g) for g in globs), (rel, globs)

@@ -567,7 +567,7 @@ def test_campaign_h5_holds_the_csv_tables_and_the_manifest(campaign):
     out, manifest = campaign["out"], campaign["manifest"]
     tables = {t["name"]: t["csv"] for rec in manifest["steps"].values() for t in rec["outputs"].get("tables", [])}
     assert set(tables) == {"catalogue", "analytic", "modes", "tilt", "lab", "map", "map_points", "shake", "record", "assess",
-                           "assess_calculation"}
+                           "assess_checks", "assess_calculation"}
     with h5py.File(out / "campaign.h5", "r") as f:
         assert json.loads(f.attrs["parameters"]) == manifest["parameters"]
         assert json.loads(f.attrs["manifest"])["steps"] == manifest["steps"]

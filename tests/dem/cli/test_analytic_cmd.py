@@ -101,3 +101,22 @@ def test_a_bad_friction_law_exits_2_in_one_line(capsys):
     assert main(["analytic", "Sh02-Sd025", "--friction", "dilatant"]) == 2
     err = capsys.readouterr().err
     assert "--friction" in err and "invalid choice: 'dilatant'" in err and err.count("\n") == 1
+
+
+def test_printed_hinge_angles_have_their_unit_and_mu_star_says_what_it_is(capsys):
+    assert main(["analytic", "Sh06-Sd015"]) == 0
+    text = capsys.readouterr().out
+    line = next(ln for ln in text.splitlines() if ln.strip().startswith("continuous"))
+    hinges = re.findall(r"([LR]) ([\d.]+) (\S+) (int|ext)", line)
+    assert len(hinges) == 4 and all(unit == "rad" for _, _, unit, _ in hinges), line
+    assert all(0 <= float(a) <= math.pi / 2 for _, a, _, _ in hinges)  # polar angles of a half, not lengths
+    m = re.search(r"two-bar +lambda = ([\d.]+) \(frictionless crown slider\) +mu\* = ([\d.]+) "
+                  r"\(friction above which the crown stops sliding and the arch rocks\)", text)
+    assert m, text
+
+
+def test_help_explains_the_terms(capsys):
+    assert main(["analytic", "--help"]) == 0
+    text = capsys.readouterr().out
+    for term in ("continuous", "discrete", "LP (friction)", "two-bar", "mu*", "[rad]", "int = intrados"):
+        assert term in text.split("terms")[-1], term

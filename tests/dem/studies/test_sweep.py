@@ -399,3 +399,19 @@ def test_studies_on_one_pool_store_what_each_stores_alone(tmp_path):
     with pytest.raises(ArchdemInputError, match="share a file"):
         run_studies([(a, tmp_path / "c.h5", None, None), (b, tmp_path / "c.h5", None, None)], FUNC, progress=False)
     assert not (tmp_path / "c.h5").exists()
+
+
+def test_progress_callable_sees_every_case_and_a_failure(tmp_path):
+    # progress=callable: progress(done, total, note) as each case ends (a failing one counted too)
+    calls = []
+    cases = _cases(3) + [{"x": 9, "fail": True}]
+    run_study(cases, FUNC, tmp_path / "s.h5", workers=1, progress=lambda *a: calls.append(a))
+    assert calls[0] == (0, 4, "starting")
+    assert [c[:2] for c in calls[1:]] == [(1, 4), (2, 4), (3, 4), (4, 4)]
+    assert calls[-1][2] == "ok 3, failed 1"
+
+
+def test_progress_line_is_silent_off_a_terminal(tmp_path, capsys):
+    # progress=True (the commands' default) draws nothing when stderr is not a terminal (pytest captures it)
+    run_study(_cases(2), FUNC, tmp_path / "s.h5", workers=1, progress=True)
+    assert capsys.readouterr().err == ""

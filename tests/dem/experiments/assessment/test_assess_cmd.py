@@ -1,5 +1,6 @@
 """``archdem assess``: the kinematic checks of an arch (or an arch on piers) against a site spectrum."""
 import json
+import re
 
 import pytest
 
@@ -25,10 +26,13 @@ def test_assess_an_arch_on_an_ntc_site(capsys):
     lin, nl = _check(d, "linear"), _check(d, "non-linear")
     assert d["spectrum"]["S"] == pytest.approx(site.S) and lin["demand_ag"] == pytest.approx(site.ag)
     assert d["a0_star"] == pytest.approx(d["alpha0"] * G / (d["e_star"] * d["FC"])) and d["FC"] == 1.35
-    # the site's ag at which the peak ground acceleration equals a0*, times q
-    sld = ntc2018(lin["capacity_ag_SLD"], 2.4, 0.3, "C")
-    assert sld.pga == pytest.approx(d["a0_star"], rel=1e-8) and lin["capacity_ag"] == pytest.approx(2 * sld.ag)
-    assert lin["safety_index"] == pytest.approx(lin["capacity_ag"] / site.ag)
+    # the clause compares q a0* with ag S; the site's ag activating the mechanism, and the one meeting q a0*
+    assert ntc2018(lin["activation_ag"], 2.4, 0.3, "C").pga == pytest.approx(d["a0_star"], rel=1e-8)
+    assert ntc2018(lin["capacity_ag"], 2.4, 0.3, "C").pga == pytest.approx(2 * d["a0_star"], rel=1e-8)
+    assert lin["demand"] == pytest.approx(site.pga) and lin["capacity"] == pytest.approx(2 * d["a0_star"])
+    # S falls with ag on soil C: the index is the clause's ratio, not the ratio of the ag's
+    assert lin["safety_index"] == pytest.approx(2 * d["a0_star"] / site.pga, rel=1e-12)
+    assert lin["capacity_ag"] / site.ag > lin["safety_index"] * 1.01
     assert nl["d_u_star"] == pytest.approx(0.4 * d["d0_star"]) and d["du_star"] == nl["d_u_star"]
     assert d["safety_index"] == min(lin["safety_index"], nl["safety_index"])
     # the displacement demand at the capacity's ag equals the ultimate displacement
@@ -170,3 +174,94 @@ def test_records_on_the_tied_structure(short_records, capsys):
     rec = d["records"]
     assert "tied structure" in rec["dem_note"] and rec["verdict"]["d0_star"] == d["tie"]["d0_star"]
     assert rec["runs"][0]["peak_d_star"] >= 0
+
+
+_ROW = re.compile(r"(?P<ls>SL[DVC]) (?P<check>.+?) +(?P<dsym>ag S|a_Z|d \(T_s [\d.]+ s\)) (?P<dem>[\d.]+) "
+                  r"(?P<du>g|mm)(?: \([\d.]+ m/s\^2\))? +(?P<csym>q a0\*|a0\*|d_u\*) (?P<cap>[\d.]+) (?P<cu>g|mm)"
+                  r"(?: \([\d.]+ m/s\^2\))? +(?P<idx>[\d.]+) +(?P<verdict>verified|not verified)  ")
+
+
+def _half_ulp(text: str) -> float:
+    """Half a unit in the last printed place of ``text``."""
+    return 0.5 * 10.0 ** -(len(text.split(".")[1]) if "." in text else 0)
+
+
+def _assert_pairs(text: str, least: int) -> int:
+    """Every check row printed in ``text``: the index is capacity / demand of the two numbers printed beside
+    it, to their printed precision, and the verdict is index >= 1."""
+    n = 0
+    for line in text.splitlines():
+        m = _ROW.search(line)
+        if m is None:
+            continue
+        dem, cap, idx = float(m["dem"]), float(m["cap"]), float(m["idx"])
+        assert m["du"] == m["cu"]
+        ratio = cap / dem
+        tol = ratio * (_half_ulp(m["cap"]) / cap + _half_ulp(m["dem"]) / dem) + _half_ulp(m["idx"])
+        assert abs(idx - ratio) <= tol, line
+        assert (m["verdict"] == "verified") == (idx >= 1), line
+        n += 1
+    assert n >= least, text
+    return n
+
+
+@pytest.mark.slow  # two mechanisms
+def test_every_printed_index_is_its_printed_pair_for_an_arch(capsys):
+    """The terminal table of an arch with SLD, SLV and strips, and its JSON: index = capacity / demand, verdict."""
+    argv = ["assess", "Sh06-Sd015", *NTC, "--sld-ag", "0.08", "--frp", "2000,0.1,100"]
+    assert main(argv) == 0
+    _assert_pairs(capsys.readouterr().out, 6)  # SLD activation, SLV linear, SLV displacement; bare and strengthened
+    d = _json(capsys, argv + ["--json"])
+    for rows in (d["check_rows"], d["frp"]["check_rows"]):
+        assert [r["limit_state"] for r in rows] == ["SLD", "SLV", "SLV"]
+        for r in rows:
+            assert r["safety_index"] == pytest.approx(r["capacity"] / r["demand"], rel=1e-12)
+            assert r["verdict"] == ("verified" if r["capacity"] >= r["demand"] else "not verified")
+    # the JSON's rows are its checks' (one function builds both)
+    assert [r["safety_index"] for r in d["check_rows"]] == [c["safety_index"] for c in d["checks"]]
+
+
+@pytest.mark.slow  # three configurations, with and without strips
+def test_every_printed_index_is_its_printed_pair_for_noh_gumbad(capsys):
+    """``archdem assess noh-gumbad``: each check row recomputes from its printed pair; the indices the
+    reviewer recomputed by hand (ring alone: linear 1.851, displacement 1.097) are unchanged; a verdict
+    column; the JSON rows carry the same numbers."""
+    assert main(["assess", "noh-gumbad"]) == 0
+    out = capsys.readouterr().out
+    assert _assert_pairs(out, 18) == 18  # six configurations x (convention, linear, displacement)
+    assert "verdict" in out.splitlines()[1] and "not verified" in out
+    d = _json(capsys, ["assess", "noh-gumbad", "--json"])
+    ring = next(r for r in d["rows"] if r["configuration"] == "ring alone" and not r["frp"])
+    by = {r["kind"]: r for r in ring["check_rows"]}
+    assert f"{by['linear']['safety_index']:.3f}" == "1.851" and f"{by['non-linear']['safety_index']:.3f}" == "1.097"
+    assert by["linear"]["demand"] == pytest.approx(3.67) and by["linear"]["capacity"] == pytest.approx(2 * ring["a0_star"])
+    assert by["activation"]["code_check"] is False and "not a code check" in by["activation"]["clause"]
+    for r in d["rows"]:
+        for c in r["check_rows"]:
+            assert c["safety_index"] == pytest.approx(c["capacity"] / c["demand"], rel=1e-12)
+        assert r["safety_index_linear"] == by_kind(r, "linear")["safety_index"]
+
+
+def by_kind(row: dict, kind: str) -> dict:
+    return next(c for c in row["check_rows"] if c["kind"] == kind)
+
+
+@pytest.mark.slow  # three configurations, bare, with strips and with a tie
+def test_noh_gumbad_takes_a_tie_the_sld_hazard_a_height_and_a_report(capsys, tmp_path):
+    """The built-in monument accepts --tie (a row per configuration with the tie alone, raising every
+    multiplier), --sld-ag (the SLD activation check beside SLV), the height options and --report."""
+    d = _json(capsys, ["assess", "noh-gumbad", "--tie", "1,20,235", "--sld-ag", "0.15", "--json"])
+    assert [(r["frp"], r["tie"]) for r in d["rows"][:3]] == [(False, False), (True, False), (False, True)]
+    for k in range(0, len(d["rows"]), 3):
+        bare, tied = d["rows"][k], d["rows"][k + 2]
+        assert tied["lambda"] > bare["lambda"] and tied["tie_force_at_collapse_kN"] == pytest.approx(20 * 235 / 1e3)
+        sld = next(c for c in tied["check_rows"] if c["limit_state"] == "SLD")
+        assert sld["kind"] == "activation" and sld["code_check"] and sld["demand"] == pytest.approx(0.15 * G)
+        assert set(tied["limit_states"]) == {"SLD", "SLV"}
+    assert main(["assess", "noh-gumbad", "--tie", "1,20,235", "--sld-ag", "0.15"]) == 0
+    _assert_pairs(capsys.readouterr().out, 27)
+    high = _json(capsys, ["assess", "noh-gumbad", "--z-ratio", "0.5", "--T1", "0.3", "--floors", "2", "--json"])
+    assert all(by_kind(r, "linear")["demand_symbol"] == "a_Z" for r in high["rows"])
+    # --report is not refused for the built-in case (what it writes belongs to the report's handling)
+    assert main(["assess", "noh-gumbad", "--report", str(tmp_path / "r.html")]) == 0
+    capsys.readouterr()

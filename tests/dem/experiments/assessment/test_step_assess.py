@@ -1,11 +1,14 @@
 """The campaign's assessment step: the Noh Gumbad vaults, unreinforced and with FRP strips."""
 import csv
 
+import pytest
+
 from dem.campaign.runner import run_campaign
 from dem.common.campaign import CampaignContext
 from specimens.catalogue import select_specimens
 
 
+@pytest.mark.slow
 def test_the_noh_gumbad_section(tmp_path):
     ctx = CampaignContext(out=tmp_path, specimens=select_specimens("Sh06-Sd015"), quick=True, workers=1,
                           log=lambda s: None)

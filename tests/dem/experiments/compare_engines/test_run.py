@@ -47,3 +47,13 @@ def test_cli_bad_input_exits_2(argv, capsys):
     assert main(["compare-engines", *argv]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and err
+
+
+def test_compare_reports_each_specimen(monkeypatch):
+    import dem.experiments.compare_engines.run as cr
+
+    monkeypatch.setattr(cr, "_one", lambda job: [job[0]])
+    calls = []
+    rows = cr.compare(["A", "B"], engines=("pybullet",), progress=lambda *a: calls.append(a))
+    assert rows == ["A", "B"]
+    assert calls == [(0, 2, "2 tilts each"), (1, 2, "A done"), (2, 2, "B done")]

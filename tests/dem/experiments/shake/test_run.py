@@ -232,3 +232,16 @@ def test_the_issue_case_on_lmgc90_recovers_and_stands():
     assert not r.collapsed and r.recovered and r.t_exceed == pytest.approx(0.14, abs=0.011)
     assert s["max_displacement_mm"] == pytest.approx(49.9, abs=1.0) and s["max_displacement_mm"] > 1e3 * model.size
     assert s["residual_displacement_mm"] == pytest.approx(15.0, abs=1.0) and s["t_end_at_rest"] is not None
+
+
+def test_progress_reports_simulated_seconds_and_the_end():
+    # a block toppled by a strong pulse: the simulated time of the run (rounded to 0.01 s) out of its
+    # duration, then where it ended and why; the run is the one without progress
+    calls = []
+    block, pulse = single_block(0.1, 0.4), SinePulse(30.0, 2.0)
+    r = shake(block, pulse, progress=lambda *a: calls.append(a))
+    t_end = round(r.sim.steps * r.settings.dt, 2)
+    assert calls[0] == (0.0, 1.5, "input") and calls[-1] == (t_end, t_end, "collapsed")
+    assert [c[0] for c in calls] == sorted(c[0] for c in calls)
+    plain = shake(block, pulse)
+    assert (plain.collapsed, plain.t_collapse, plain.sim.steps) == (r.collapsed, r.t_collapse, r.sim.steps)

@@ -142,3 +142,17 @@ def test_domain_engine_dem(tmp_path, capsys):
     assert [p["x"] for p in d["points"]] == [5.0]  # a collapse was found at the one frequency
     assert d["points"][0]["amplitude_g"] >= d["lambda"] * 0.99  # not below the static onset
     assert (tmp_path / "d.png").stat().st_size > 0
+
+
+@pytest.mark.slow
+def test_shake_shows_progress_on_a_terminal_only(tmp_path):
+    # the simulated time of the run on a terminal's line; nothing with --json
+    from tests.dem.core.test_progress import run_on_terminal
+
+    args = ["shake", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--sine", "2", "--amplitude", "0.5",
+            "--full", "--tail", "1", "--out", str(tmp_path)]
+    rc, out, err = run_on_terminal(args)
+    assert rc == 0 and "PGA 0.500 g" in out
+    assert "shake Sh0.6-Sd0.25-Rc0.2: " in err and "/1.5 s simulated" in err
+    rc, out, err = run_on_terminal(args + ["--json"])
+    assert rc == 0 and json.loads(out)["pga_g"] == pytest.approx(0.5) and err == ""

@@ -175,3 +175,30 @@ def test_a_threshold_on_a_local_dask_cluster_is_the_local_one():
         remote = threshold(block, 2.0, st, a_min_g=0.27, a_max_g=0.4, scheduler=cl.scheduler_address)
     assert remote.amplitude_g == local.amplitude_g and remote.bracket_g == local.bracket_g
     assert [(r.amplitude_g, r.collapsed) for r in remote.runs] == [(r.amplitude_g, r.collapsed) for r in local.runs]
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+@pytest.mark.parametrize("freq", sorted(_TRUTHS))
+def test_progress_counts_every_run_and_ends_on_the_total(monkeypatch, freq, workers):
+    # one report as each run ends: runs done 1..n, a total never below them that ends on n; each note
+    # the amplitude and its outcome, and the bracket once it is known (here, a scan of 18 and 4 bisections)
+    monkeypatch.setattr(thresholds, "_run_one", _fake_run)
+    calls = []
+    r = threshold(single_block(0.1, 0.4), freq, a_min_g=0.3, a_max_g=1.5, scan_ratio=1.1, tol=0.01, workers=workers,
+                  progress=lambda done, total, note: calls.append((done, total, note)))
+    assert calls[0] == (0, 18 + 4, "scan 0.3000-1.5000 g")
+    assert [c[0] for c in calls[1:]] == list(range(1, r.n_sims + 1))
+    assert all(total >= done for done, total, _ in calls) and calls[-1][1] == r.n_sims
+    assert sorted(c[2].split(" g ")[0] for c in calls[1:]) == sorted(f"{o.amplitude_g:.4f}" for o in r.runs)
+    if r.bracket_g is not None:
+        assert calls[-1][2].endswith(f"bracket [{r.bracket_g[0]:.4f}, {r.bracket_g[1]:.4f}] g") or freq == 3.0
+
+
+def test_failure_domain_reports_each_frequency(monkeypatch):
+    monkeypatch.setattr(thresholds, "_run_one", _fake_run)
+    calls = []
+    thresholds.failure_domain(single_block(0.1, 0.4), [1.0, 4.0], workers=1, a_min_g=0.3, a_max_g=1.5, scan_ratio=1.1,
+                              progress=lambda done, total, note: calls.append((done, total, note)))
+    assert calls[0] == (0, 2, "2 frequencies")
+    assert calls[1][:2] == (1, 2) and calls[1][2].startswith("1 Hz: 0.45")
+    assert calls[2] == (2, 2, "4 Hz: no collapse")

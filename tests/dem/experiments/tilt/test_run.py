@@ -324,3 +324,40 @@ def test_time_scale_of_a_drawing_from_its_length_scale(tmp_path):
     sh1 = discretise(get_specimen("Sh1-Sd025").arch, config="free")
     back = read_assembly(write_assembly(sh1, tmp_path / "sh1.csv"))
     assert time_scale_of(back) == time_scale_of(sh1) == 1.0
+
+
+@pytest.mark.parametrize("truth", [0.99, 0.973, 0.96, 1.02])
+@pytest.mark.parametrize("probe", ["last", "first"])
+def test_progress_follows_the_search(monkeypatch, truth, probe):
+    # the progress of a hold search: one report as each level starts and ends, the simulations counted,
+    # the bracket the search holds (a wrong end moved outward), the total never below what was run;
+    # the last report is the answer. Faked levels, as above
+    from types import SimpleNamespace
+
+    import dem.experiments.tilt.run as pr
+    from dem.core.model import single_block
+
+    def fake_hold(model, settings, proto, lam, engine=None):
+        return SimpleNamespace(collapsed=lam > truth, mode="rocking", joints=[])
+
+    monkeypatch.setattr(pr, "hold_level", fake_hold)
+    calls = []
+    r = tilt(single_block(0.1, 0.4), Settings(), TiltProtocol(guess=1.0, probe_ends=probe),
+             progress=lambda done, total, note: calls.append((done, total, note)))
+    ends = [c for c in calls if " held;" in c[2] or " collapsed;" in c[2]]
+    assert [c[0] for c in ends] == list(range(1, r.n_sims + 1))
+    assert all(total >= done for done, total, _ in calls)
+    assert ends[-1][1] == r.n_sims  # nothing left once the search ended
+    assert f"bracket [{r.bracket[0]:.4f}, {r.bracket[1]:.4f}]" in ends[-1][2]
+    assert calls[-1] == (r.n_sims, r.n_sims, f"lambda = {r.lam:.4f}")
+    for (lam, collapsed), (_, _, note) in zip(r.levels, ends):
+        assert note.startswith(f"level {lam:.4f} {'collapsed' if collapsed else 'held'}")
+
+
+@pytest.mark.slow
+def test_progress_of_a_real_tilt_reports_simulated_time():
+    calls = []
+    r = tilt("Sh06-Sd010", progress=lambda done, total, note: calls.append((done, total, note)))
+    assert calls[0] == (0, None, "static LP of the blocks (first estimate)")
+    assert any(" s; bracket" in note for _, _, note in calls)  # within a level: its simulated time
+    assert [d for d, _, _ in calls] == sorted(d for d, _, _ in calls) and calls[-1][0] == r.n_sims

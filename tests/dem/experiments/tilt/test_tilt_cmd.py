@@ -111,3 +111,24 @@ def test_bad_contact_and_ensemble_input_exit_2_in_one_line(tmp_path, capsys, ext
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and msg in err
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.slow
+def test_tilt_shows_progress_on_a_terminal_only(tmp_path):
+    # stderr on a pseudo-terminal: the progress line (levels, bracket), cleared before the answer; with
+    # --json, or with stderr on a pipe, not a byte of it
+    import subprocess
+    import sys
+
+    from tests.dem.core.test_progress import run_on_terminal
+
+    # the small arch of test_tilt_json (3 bodies): about 1 s of simulation
+    args = ["tilt", "--Sh", "0.6", "--Sd", "0.25", "--Rc", "0.2", "--voussoirs", "2", "--out", str(tmp_path)]
+    rc, out, err = run_on_terminal(args)
+    assert rc == 0 and "lambda = " in out
+    assert "tilt Sh0.6-Sd0.25-Rc0.2: " in err and "/3 sims" in err and "bracket [" in err and "level 0." in err
+    assert err.rstrip("\r").rsplit("\r", 1)[-1].strip() == ""  # the line is cleared before the answer
+    rc, out, err = run_on_terminal(args + ["--json"])
+    assert rc == 0 and json.loads(out)["n_sims"] >= 3 and err == ""
+    p = subprocess.run([sys.executable, "-m", "dem.cli", *args], capture_output=True, text=True, timeout=240)
+    assert p.returncode == 0 and "sims" not in p.stderr and "\r" not in p.stderr
