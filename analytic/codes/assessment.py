@@ -7,7 +7,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable
 
-from analytic.codes.frp import Strips, masonry_type, strengthened_collapse
+from analytic.codes.frp import BondFactors, Strips, masonry_type, strengthened_collapse
 from analytic.codes.kinematic import (
     CONFIDENCE_FACTORS,
     MECHANISM_DAMPING,
@@ -110,8 +110,15 @@ def assess(mech, site, FC: float = CONFIDENCE_FACTORS["LC1"], q: float = Q_MASON
 _D0_FROM = {"this curve": "on the mechanism's own capacity curve", "gravity alone": "on the curve of gravity alone"}
 
 
-def _step(symbol: str, value, unit: str, formula: str) -> dict:
-    return {"symbol": symbol, "value": value, "unit": unit, "formula": formula}
+#: The clauses of the Circolare 2019 the trail's steps come from, at section level (no equation numbers:
+#: they are not checked against the text).
+LINEAR_CLAUSE = "C8.7.1.2 linear"
+NON_LINEAR_CLAUSE = "C8.7.1.2 non-linear"
+FC_CLAUSE = "C8.5 knowledge levels"
+
+
+def _step(symbol: str, value, unit: str, formula: str, clause: str = LINEAR_CLAUSE) -> dict:
+    return {"symbol": symbol, "value": value, "unit": unit, "formula": formula, "clause": clause}
 
 
 def trail(a: Assessment) -> list[dict]:
@@ -130,11 +137,11 @@ def trail(a: Assessment) -> list[dict]:
             _step("M*", lin.M_star, "kg", "(sum m dx)^2 / sum m dx^2"),
             _step("sum m", lin.mass, "kg", "mass of the moving bodies"),
             _step("e*", lin.e_star, "-", "M* / sum m"),
-            _step("FC", lin.FC, "-", "confidence factor of the knowledge level"),
+            _step("FC", lin.FC, "-", "confidence factor of the knowledge level", FC_CLAUSE),
             _step("a0*", lin.a0_star, "m/s^2", "alpha0 g / (e* FC)"),
             _step("a0*/g", lin.a0_star / G, "g", "a0* / g"),
             _step("d0*", cur.d0_star, "m", f"d* where a*(d*) vanishes ({_D0_FROM.get(cur.d0_star_from, cur.d0_star_from)}); "
-                                           f"d* = d_C / e*, a* = alpha g / (e* FC)")]
+                                           f"d* = d_C / e*, a* = alpha g / (e* FC)", NON_LINEAR_CLAUSE)]
     for c in a.checks:
         tag = f"{c['limit_state']} {c['kind']}"
         if c["kind"] in ("activation", "linear"):
@@ -148,22 +155,23 @@ def trail(a: Assessment) -> list[dict]:
                     _step(f"{tag}: capacity ag", c["capacity_ag"], "m/s^2",
                           "the hazard's ag at which the demand acceleration equals q a0* (spectrum rebuilt)")]
         else:
-            ls = c["limit_state"]
-            out += [_step(f"{tag}: d_u*", c["d_u_star"], "m", f"{ULTIMATE_FRACTION[ls]:g} d0*"),
-                    _step(f"{tag}: a*(d_u*)", c["a_u_star"], "m/s^2", "capacity curve at d_u*"),
-                    _step(f"{tag}: T_s", c["period"], "s", f"{PERIOD_COEFFICIENT[ls]:g} pi sqrt(d_u* / a*(d_u*))"),
-                    _step(f"{tag}: xi", c["damping"], "%", f"mechanism's damping at {ls} ({MECHANISM_DAMPING[ls]:g} %)"),
-                    _step(f"{tag}: Se(T_s)", c.get("Se_at_period"), "m/s^2", "elastic spectrum at T_s and xi"),
+            ls, nl = c["limit_state"], NON_LINEAR_CLAUSE
+            out += [_step(f"{tag}: d_u*", c["d_u_star"], "m", f"{ULTIMATE_FRACTION[ls]:g} d0*", nl),
+                    _step(f"{tag}: a*(d_u*)", c["a_u_star"], "m/s^2", "capacity curve at d_u*", nl),
+                    _step(f"{tag}: T_s", c["period"], "s", f"{PERIOD_COEFFICIENT[ls]:g} pi sqrt(d_u* / a*(d_u*))", nl),
+                    _step(f"{tag}: xi", c["damping"], "%", f"mechanism's damping at {ls} ({MECHANISM_DAMPING[ls]:g} %)", nl),
+                    _step(f"{tag}: Se(T_s)", c.get("Se_at_period"), "m/s^2", "elastic spectrum at T_s and xi", nl),
                     _step(f"{tag}: demand d", c["demand_displacement"], "m",
-                          "largest Se(T) (T / 2 pi)^2 for T <= T_s at xi"),
+                          "largest Se(T) (T / 2 pi)^2 for T <= T_s at xi", nl),
                     _step(f"{tag}: capacity ag", c["capacity_ag"], "m/s^2",
-                          "the hazard's ag whose demand displacement equals d_u* (spectrum rebuilt)")]
-        out += [_step(f"{tag}: site ag", c["demand_ag"], "m/s^2", "the hazard's ag"),
+                          "the hazard's ag whose demand displacement equals d_u* (spectrum rebuilt)", nl)]
+        cl = NON_LINEAR_CLAUSE if c["kind"] == "non-linear" else LINEAR_CLAUSE
+        out += [_step(f"{tag}: site ag", c["demand_ag"], "m/s^2", "the hazard's ag", cl),
                 _step(f"{tag}: safety index", c["safety_index"], "-",
                       "capacity / demand: " + ("q a0* / demand acceleration" if c["kind"] != "non-linear"
-                                               else "d_u* / demand d")),
+                                               else "d_u* / demand d"), cl),
                 _step(f"{tag}: verified", c["verified"], "-", "safety index >= 1"
-                      + ("" if c.get("code_check", True) else " (a convention, not a code check)"))]
+                      + ("" if c.get("code_check", True) else " (a convention, not a code check)"), cl)]
     return out
 
 
@@ -278,11 +286,14 @@ def monument_site():
     return ec8(NOH_GUMBAD_PGA, "A", 1)
 
 
-def monument_strips(FC: float = CONFIDENCE_FACTORS["LC1"], face: str = "extrados", masonry=None):
+def monument_strips(FC: float = CONFIDENCE_FACTORS["LC1"], face: str = "extrados", masonry=None,
+                    bond: BondFactors | None = None):
     """The Noh Gumbad strips designed to the guideline (carbon, outdoors, application A) on the
-    assumed masonry (``masonry`` None: :data:`NOH_GUMBAD_MASONRY` at the knowledge level of ``FC``)."""
-    m = masonry_type(NOH_GUMBAD_MASONRY, FC) if masonry is None else masonry
-    return Strips(*NOH_GUMBAD_FRP, face=face, modulus=NOH_GUMBAD_FRP_MODULUS, masonry=m, FC=FC)
+    assumed masonry (``masonry`` None: :data:`NOH_GUMBAD_MASONRY` at the knowledge level of ``FC``);
+    ``bond``: the guideline's bond factors (None: the unverified defaults)."""
+    bond = BondFactors() if bond is None else bond
+    m = masonry_type(NOH_GUMBAD_MASONRY, FC, bond) if masonry is None else masonry
+    return Strips(*NOH_GUMBAD_FRP, face=face, modulus=NOH_GUMBAD_FRP_MODULUS, masonry=m, FC=FC, bond=bond)
 
 
 def assess_monument(monument, site, strips=None, FC: float = CONFIDENCE_FACTORS["LC1"], q: float = Q_MASONRY,

@@ -35,16 +35,19 @@ ETA_A = {"internal": {"glass": 0.75, "carbon": 0.95, "aramid": 0.85},
          "external": {"glass": 0.65, "carbon": 0.85, "aramid": 0.75},
          "aggressive": {"glass": 0.50, "carbon": 0.85, "aramid": 0.70}}
 #: Correction factors of the specific fracture energy on masonry [m]: end and intermediate debonding.
+#: UNVERIFIED against CNR-DT 200 R1/2013 §5.3: the defaults of :class:`BondFactors` (overridable).
 K_G_END, K_G_INTERMEDIATE = 0.031e-3, 0.093e-3
 #: Load-distribution factor of intermediate debonding (1: no load distributed along the strip).
 K_Q = 1.0
 #: Ultimate slip of the bond law [m], the bond's model factor and the least optimal bond length [m].
+#: UNVERIFIED against the guideline: the defaults of :class:`BondFactors` (overridable).
 SLIP_U, GAMMA_RD, L_ED_MIN = 0.4e-3, 1.5, 0.150
 #: Least ratio b_f / b in the width factor k_b.
 BF_B_MIN = 0.25
 #: Masonry types: compressive strength range [Pa] of the code's table for existing masonry; the
 #: tensile strength is taken as a tenth of the compressive one.
 MASONRY_TYPES = {"solid-brick-lime": (2.6e6, 4.3e6)}
+#: UNVERIFIED: the default of :attr:`BondFactors.fmt_ratio` (overridable).
 MASONRY_TENSILE_RATIO = 0.10
 #: Accepted masonry strengths [Pa] (beyond them a typo, not a masonry).
 FM_RANGE, FMT_MAX_RATIO = (0.5e6, 20e6), 1.0 / 3.0
@@ -58,6 +61,89 @@ def _positive(name: str, v, lo: float, hi: float, unit: str = "") -> float:
     if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and lo <= v <= hi):
         raise ArchdemInputError(f"{name} must be a number from {lo:g} to {hi:g}{unit}, got {v!r}")
     return float(v)
+
+
+#: Words beside a bond factor in the records: the unverified default, or a value the user set.
+UNVERIFIED_DEFAULT, USER_SET = "unverified default", "set by the user"
+
+
+@dataclass(frozen=True)
+class BondFactors:
+    """The bond and debonding factors of CNR-DT 200 R1/2013 §5.3 (FRP on masonry), each overridable by
+    an engineer holding the guideline. The defaults are the module constants and are UNVERIFIED
+    against the guideline's text (docs/physics/assessment.md#5-frp-strips).
+
+    ``k_G`` [m]: correction factor of the specific fracture energy, end debonding (default 0.031 mm);
+    ``k_G2`` [m]: the same, intermediate debonding (default 0.093 mm);
+    ``s_u`` [m]: ultimate slip of the bond law, in ``f_bd = 2 Gamma_Fd / s_u`` (default 0.4 mm);
+    ``gamma_Rd`` [-]: model factor of the optimal bond length (default 1.5);
+    ``l_ed_min`` [m]: least optimal bond length (default 150 mm);
+    ``fmt_ratio`` [-]: the masonry's mean tensile strength ``f_mtm`` as a share of its compressive
+    ``f_mm`` when not measured, for a named masonry type (default 0.10);
+    ``user_set``: the names the user set (a value other than its default counts as set anyway)."""
+
+    k_G: float = K_G_END
+    k_G2: float = K_G_INTERMEDIATE
+    s_u: float = SLIP_U
+    gamma_Rd: float = GAMMA_RD
+    l_ed_min: float = L_ED_MIN
+    fmt_ratio: float = MASONRY_TENSILE_RATIO
+    user_set: frozenset = frozenset()
+
+    #: (field, symbol, unit of the records, scale from SI to it, accepted range in SI)
+    FIELDS = (("k_G", "k_G", "mm", 1e3, (0.0, 1e-3)), ("k_G2", "k_G2", "mm", 1e3, (0.0, 1e-3)),
+              ("s_u", "s_u", "mm", 1e3, (0.0, 5e-3)), ("gamma_Rd", "gamma_Rd", "-", 1.0, (1.0, 3.0)),
+              ("l_ed_min", "l_ed_min", "mm", 1e3, (0.0, 1.0)), ("fmt_ratio", "f_mtm/f_mm", "-", 1.0, (0.0, FMT_MAX_RATIO)))
+
+    def __post_init__(self) -> None:
+        for name, sym, unit, k, (lo, hi) in self.FIELDS:
+            v = getattr(self, name)
+            # gamma_Rd may equal its least value 1; the others must be positive
+            ok = (not isinstance(v, bool) and isinstance(v, (int, float)) and math.isfinite(v)
+                  and (lo <= v if lo > 0 else lo < v) and v <= hi)
+            if not ok:
+                u = "" if unit == "-" else f" {unit}"
+                num = isinstance(v, (int, float)) and not isinstance(v, bool)
+                raise ArchdemInputError(f"FRP bond factor {sym} (CNR-DT 200 R1/2013) must be in "
+                                        f"{'[' if lo > 0 else '('}{lo * k:g}, {hi * k:.4g}]{u}, "
+                                        f"got {f'{v * k:g}{u}' if num else repr(v)}")
+        unknown = set(self.user_set) - {f[0] for f in self.FIELDS}
+        if unknown:
+            raise ArchdemInputError(f"unknown FRP bond factor(s) {', '.join(sorted(unknown))}")
+        changed = {f[0] for f in self.FIELDS if getattr(self, f[0]) != getattr(BondFactors, f[0])}
+        object.__setattr__(self, "user_set", frozenset(self.user_set) | changed)
+
+    @classmethod
+    def given(cls, **values) -> "BondFactors":
+        """The factors with those of ``values`` that are not None set by the user (SI units)."""
+        kw = {k: v for k, v in values.items() if v is not None}
+        return cls(**kw, user_set=frozenset(kw))
+
+    def source(self, name: str) -> str:
+        """"set by the user" or "unverified default"."""
+        return USER_SET if name in self.user_set else UNVERIFIED_DEFAULT
+
+    @property
+    def all_default(self) -> bool:
+        return not self.user_set
+
+    def describe(self) -> dict:
+        """Each factor: its value in the unit of the records, the unit, and whether it is the
+        unverified default or was set by the user."""
+        return {name: {"symbol": sym, "value": getattr(self, name) * k, "unit": unit, "source": self.source(name)}
+                for name, sym, unit, k, _ in self.FIELDS}
+
+    def text(self, fmt_ratio: bool = True) -> str:
+        """One line: each factor with "(unverified default)" beside the defaults (``fmt_ratio`` False:
+        without the tensile ratio, where the masonry's tensile strength is given)."""
+        parts = []
+        for name, sym, unit, k, _ in self.FIELDS:
+            if name == "fmt_ratio" and not fmt_ratio:
+                continue
+            u = "" if unit == "-" else f" {unit}"
+            tag = " (unverified default)" if name not in self.user_set else " (set by the user)"
+            parts.append(f"{sym} {getattr(self, name) * k:g}{u}{tag}")
+        return ", ".join(parts)
 
 
 @dataclass(frozen=True)
@@ -83,17 +169,20 @@ class Masonry:
         return {"name": self.name, "fm_MPa": self.fm / 1e6, "fmt_MPa": self.fmt / 1e6}
 
 
-def masonry_type(name: str, FC: float) -> Masonry:
+def masonry_type(name: str, FC: float, bond: BondFactors | None = None) -> Masonry:
     """A named masonry of :data:`MASONRY_TYPES`: at knowledge level LC1 (``FC >= 1.35``) the least
-    compressive strength of its range, else the middle of the range; tensile a tenth of it."""
+    compressive strength of its range, else the middle of the range; tensile ``bond.fmt_ratio`` of it
+    (default a tenth, unverified)."""
     if name not in MASONRY_TYPES:
         raise ArchdemInputError(f"unknown masonry type {name!r}; known: {', '.join(MASONRY_TYPES)} "
                                 f"(or FM_MPA,FMT_MPA)")
+    bond = BondFactors() if bond is None else bond
     lo, hi = MASONRY_TYPES[name]
     fm = lo if FC >= 1.35 else 0.5 * (lo + hi)
     level = "LC1: least of" if FC >= 1.35 else "middle of"
-    return Masonry(fm, MASONRY_TENSILE_RATIO * fm,
-                   f"{name} ({level} {lo / 1e6:g}-{hi / 1e6:g} MPa, fmt = {MASONRY_TENSILE_RATIO:g} fm)")
+    ratio = bond.fmt_ratio
+    return Masonry(fm, ratio * fm, f"{name} ({level} {lo / 1e6:g}-{hi / 1e6:g} MPa, fmt = {ratio:g} fm, "
+                                   f"{bond.source('fmt_ratio')})")
 
 
 @dataclass(frozen=True)
@@ -103,7 +192,8 @@ class Strips:
     b_f [m] across the ring; ``design_strength`` [Pa] given by the designer (wins over the rules);
     ``modulus`` E_f [Pa], ``fibre`` (carbon/glass/aramid), ``exposure`` (internal/external/aggressive),
     ``application`` type (A/B), the substrate ``masonry`` and the confidence factor ``FC`` of its
-    strengths: the guideline's design values (module doc)."""
+    strengths: the guideline's design values (module doc); ``bond``: the guideline's bond and
+    debonding factors (:class:`BondFactors`, unverified defaults unless set)."""
 
     strength: float
     thickness: float
@@ -116,8 +206,11 @@ class Strips:
     application: str = "A"
     masonry: Masonry | None = None
     FC: float = 1.35
+    bond: BondFactors = BondFactors()
 
     def __post_init__(self) -> None:
+        if not isinstance(self.bond, BondFactors):
+            raise ArchdemInputError(f"FRP bond factors must be a BondFactors, got {self.bond!r}")
         for name, v, hi in (("strength", self.strength, 1e11), ("thickness", self.thickness, 0.1),
                             ("width", self.width, 100.0)):
             if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and 0 < v <= hi):
@@ -167,7 +260,7 @@ class Strips:
                 "fibre": self.fibre, "exposure": self.exposure, "application": self.application,
                 "masonry": None if self.masonry is None else self.masonry.describe(),
                 "design_strength_MPa": d.governing_stress / 1e6, "governing": d.governing, "force_N": d.force,
-                "design": d.describe()}
+                "bond_factors": self.bond.describe(), "design": d.describe()}
 
 
 @dataclass(frozen=True)
@@ -232,21 +325,26 @@ class StripDesign:
                "gamma_f": {"value": self.gamma_f, "unit": "-", "formula": f"rupture partial factor (application {st.application})"},
                "f_rupture": {"value": self.f_rupture / 1e6, "unit": "MPa", "formula": "eta_a f_fk / gamma_f"}}
         if self.Gamma_Fd is not None:
-            m = st.masonry
+            m, bf = st.masonry, st.bond
             out.update({
                 "f_mm": {"value": m.fm / 1e6, "unit": "MPa", "formula": m.name},
                 "f_mtm": {"value": m.fmt / 1e6, "unit": "MPa", "formula": m.name},
                 "k_b": {"value": self.k_b, "unit": "-", "formula": "sqrt((3 - b_f/b) / (1 + b_f/b)) >= 1, b_f/b >= 0.25"},
-                "k_G": {"value": K_G_END * 1e3, "unit": "mm", "formula": "end debonding"},
-                "k_G2": {"value": K_G_INTERMEDIATE * 1e3, "unit": "mm", "formula": "intermediate debonding"},
+                "k_G": {"value": bf.k_G * 1e3, "unit": "mm", "formula": f"end debonding ({bf.source('k_G')})"},
+                "k_G2": {"value": bf.k_G2 * 1e3, "unit": "mm",
+                         "formula": f"intermediate debonding ({bf.source('k_G2')})"},
                 "Gamma_Fd": {"value": self.Gamma_Fd / 1e3, "unit": "N/mm", "formula": "k_b k_G / FC sqrt(f_mm f_mtm)"},
                 "Gamma_Fd2": {"value": self.Gamma_Fd2 / 1e3, "unit": "N/mm", "formula": "k_b k_G2 / FC sqrt(f_mm f_mtm)"},
                 "gamma_fd": {"value": self.gamma_fd, "unit": "-", "formula": f"debonding partial factor (application {st.application})"},
                 "f_end": {"value": self.f_end / 1e6, "unit": "MPa", "formula": "sqrt(2 E_f Gamma_Fd / t_f) / gamma_fd"},
                 "f_intermediate": {"value": self.f_intermediate / 1e6, "unit": "MPa",
                                    "formula": "k_q sqrt(2 E_f Gamma_Fd2 / t_f) / gamma_fd"},
+                "s_u": {"value": bf.s_u * 1e3, "unit": "mm", "formula": f"ultimate slip of the bond law ({bf.source('s_u')})"},
+                "gamma_Rd": {"value": bf.gamma_Rd, "unit": "-", "formula": f"model factor ({bf.source('gamma_Rd')})"},
+                "l_ed_min": {"value": bf.l_ed_min * 1e3, "unit": "mm",
+                             "formula": f"least optimal bond length ({bf.source('l_ed_min')})"},
                 "l_ed": {"value": self.l_ed * 1e3, "unit": "mm",
-                         "formula": "max(sqrt(pi^2 E_f t_f Gamma_Fd / 2) / (gamma_Rd f_bd), 150 mm), f_bd = 2 Gamma_Fd / s_u"}})
+                         "formula": "max(sqrt(pi^2 E_f t_f Gamma_Fd / 2) / (gamma_Rd f_bd), l_ed_min), f_bd = 2 Gamma_Fd / s_u"}})
         if self.given is not None:
             out["f_given"] = {"value": self.given / 1e6, "unit": "MPa", "formula": "the designer's design strength"}
         out["f_fd"] = {"value": self.governing_stress / 1e6, "unit": "MPa", "formula": f"governing: {self.governing}"}
@@ -267,15 +365,16 @@ def strip_design(strips: Strips, substrate_width: float | None = None) -> StripD
     ratio = min(1.0, max(BF_B_MIN, strips.width / b))
     k_b = max(1.0, math.sqrt((3.0 - ratio) / (1.0 + ratio)))
     # the guideline's fracture energy is in N/mm with strengths in MPa and k_G in mm: in SI, N/m
+    bf = strips.bond  # the guideline's bond factors: unverified defaults unless the user set them
     root = math.sqrt(m.fm * m.fmt)
-    G1 = k_b * K_G_END / strips.FC * root
-    G2 = k_b * K_G_INTERMEDIATE / strips.FC * root
+    G1 = k_b * bf.k_G / strips.FC * root
+    G2 = k_b * bf.k_G2 / strips.FC * root
     gfd = GAMMA_FD[strips.application]
     E, t = strips.modulus, strips.thickness
     f_end = math.sqrt(2 * E * G1 / t) / gfd
     f_int = K_Q * math.sqrt(2 * E * G2 / t) / gfd
-    f_bd = 2 * G1 / SLIP_U
-    l_ed = max(math.sqrt(math.pi ** 2 * E * t * G1 / 2) / (GAMMA_RD * f_bd), L_ED_MIN)
+    f_bd = 2 * G1 / bf.s_u
+    l_ed = max(math.sqrt(math.pi ** 2 * E * t * G1 / 2) / (bf.gamma_Rd * f_bd), bf.l_ed_min)
     return StripDesign(**base, k_b=k_b, Gamma_Fd=G1, Gamma_Fd2=G2, gamma_fd=gfd, f_end=f_end, f_intermediate=f_int,
                        l_ed=l_ed)
 

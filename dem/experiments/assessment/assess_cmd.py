@@ -14,7 +14,7 @@ from analytic.codes.assessment import (
     monument_strips,
     quantity_text,
 )
-from analytic.codes.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, Masonry, Strips, masonry_type
+from analytic.codes.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, BondFactors, Masonry, Strips, masonry_type
 from analytic.codes.kinematic import CONFIDENCE_FACTORS, Height
 from analytic.limit.ties import Tie
 from analytic.motions.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum, rebuild
@@ -71,12 +71,45 @@ def _height(args: argparse.Namespace):
     return Height(args.z_ratio, args.T1, args.floors, args.building_damping)
 
 
-def _masonry(args: argparse.Namespace):
-    """``--masonry FM_MPA,FMT_MPA`` or a named type (its values by the knowledge level of ``--FC``)."""
+#: The options of the guideline's bond factors (CNR-DT 200 R1/2013 §5.3): (dest, BondFactors field,
+#: scale of the option's unit to SI, the option's unit, what the factor is).
+BOND_OPTIONS = (("frp_kG", "k_G", 1e-3, "MM", "k_G, correction factor of the fracture energy, end debonding"),
+                ("frp_kG2", "k_G2", 1e-3, "MM", "k_G2, correction factor of the fracture energy, intermediate "
+                                                "debonding"),
+                ("frp_su", "s_u", 1e-3, "MM", "s_u, ultimate slip of the bond law (f_bd = 2 Gamma_Fd / s_u)"),
+                ("frp_gamma_rd", "gamma_Rd", 1.0, "FACTOR", "gamma_Rd, model factor of the optimal bond length"),
+                ("frp_led_min", "l_ed_min", 1e-3, "MM", "the least optimal bond length l_ed"),
+                ("frp_fmt_ratio", "fmt_ratio", 1.0, "RATIO", "f_mtm / f_mm, the masonry's tensile strength as a share "
+                                                          "of its compressive one for a named masonry type"))
+
+
+def _bond(args: argparse.Namespace, debonding: bool, named_masonry: bool, why: str) -> BondFactors:
+    """The guideline's bond factors: those given by hand, the unverified defaults otherwise. Each is
+    refused in one line where no debonding is designed (``why`` says what they belong to), and
+    ``--frp-fmt-ratio`` where the masonry's tensile strength is given rather than taken from a type."""
+    for dest, *_ in BOND_OPTIONS:
+        option_used(args, dest, debonding, why)
+    option_used(args, "frp_fmt_ratio", named_masonry, "--masonry FM_MPA,FMT_MPA gives the tensile strength; the "
+                                                      "ratio belongs to a named masonry type")
+    vals = {}
+    for dest, field, scale, _, _ in BOND_OPTIONS:
+        v = getattr(args, dest, None)
+        if v is not None:
+            vals[field] = v * scale
+    return BondFactors.given(**vals)
+
+
+def _named_masonry(args: argparse.Namespace) -> bool:
+    return args.masonry is None or args.masonry in MASONRY_TYPES
+
+
+def _masonry(args: argparse.Namespace, bond: BondFactors | None = None):
+    """``--masonry FM_MPA,FMT_MPA`` or a named type (its values by the knowledge level of ``--FC``;
+    its tensile strength by ``bond``'s ratio)."""
     if args.masonry is None:
         return None
     if args.masonry in MASONRY_TYPES:
-        return masonry_type(args.masonry, args.FC)
+        return masonry_type(args.masonry, args.FC, bond)
     try:
         vals = [float(x) for x in args.masonry.split(",")]
     except ValueError:
@@ -88,19 +121,25 @@ def _masonry(args: argparse.Namespace):
 
 
 def _strip_options(args: argparse.Namespace) -> dict:
-    """The strips' design options besides their description (modulus, fibre, exposure, application, masonry)."""
-    masonry = _masonry(args)
+    """The strips' design options besides their description (modulus, fibre, exposure, application, masonry,
+    bond factors)."""
+    bond = _bond(args, args.masonry is not None, args.masonry in MASONRY_TYPES,
+                 "the bond factors design debonding from the --masonry; without it the strips are designed "
+                 "for rupture only")
+    masonry = _masonry(args, bond)
     if args.frp_modulus is not None and not (math.isfinite(args.frp_modulus) and args.frp_modulus > 0):
         raise ArchdemInputError(f"--frp-modulus must be a positive number of GPa, got {args.frp_modulus:g}")
     if masonry is not None and args.frp_modulus is None:
         raise ArchdemInputError("--masonry needs --frp-modulus (the strips' E_f: debonding depends on it)")
     return {"modulus": None if args.frp_modulus is None else args.frp_modulus * 1e9, "fibre": args.frp_fibre,
-            "exposure": args.frp_exposure, "application": args.frp_application, "masonry": masonry, "FC": args.FC}
+            "exposure": args.frp_exposure, "application": args.frp_application, "masonry": masonry, "FC": args.FC,
+            "bond": bond}
 
 
 def _strips(args: argparse.Namespace):
     if args.frp is None:
         option_used(args, "frp_face", False, "it places the --frp strips")
+        _bond(args, False, False, "it sets a bond factor of the --frp strips' debonding (with --masonry)")
         if args.masonry is not None or args.frp_modulus is not None:
             raise ArchdemInputError("--masonry and --frp-modulus belong to --frp (the strips they design)")
         return None
@@ -216,7 +255,8 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
         if args.frp_modulus is not None:
             raise ArchdemInputError(f"{monument.name}'s strips are described by the study (E_f assumed): "
                                     f"--frp-modulus belongs to --frp")
-        strips = monument_strips(args.FC, args.frp_face, _masonry(args))
+        bond = _bond(args, True, _named_masonry(args), "")
+        strips = monument_strips(args.FC, args.frp_face, _masonry(args, bond), bond)
     _check_report(args)  # before the work: a bad report path must not cost the assessment
     rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state, height=height, tie=tie,
                            sld_site=sld)
@@ -265,6 +305,8 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
     for line in check_table([c for _, c in flat], [("configuration", 18, [r["configuration"] for r, _ in flat]),
                                                    ("strengthening", 13, [_strengthening(r) for r, _ in flat])]):
         print(line)
+    if strips.masonry is not None:
+        print(f"  FRP bond factors (CNR-DT 200 R1/2013): {strips.bond.text(_named_masonry(args))}")
     return 0
 
 
@@ -327,7 +369,7 @@ def _run(args: argparse.Namespace) -> int:
 
         if args.report.lower().endswith(".pdf"):
             write_pdf_report(args.report, label, site, mech, res, out, frp, out.get(key), project=args.project or "-",
-                             engineer=args.engineer or "-", inputs=command_inputs(args, arch))
+                             engineer=args.engineer or "-", inputs=command_inputs(args, arch, strips))
         else:
             write_report(args.report, label, site, mech, res, out, frp, out.get(key))
         out["report"] = args.report
@@ -344,10 +386,13 @@ def _run(args: argparse.Namespace) -> int:
             sd = out[key]["strips"]
             parts.append(f"FRP strips on the {strips.face}, f_fd = {sd['design_strength_MPa']:.4g} MPa "
                          f"({sd['governing']}), T = {sd['force_N'] / 1e3:.3g} kN")
+
         if tie is not None:
             parts.append(f"a tie at {tie.height:g} m yielding at {tie.force / 1e3:.4g} kN "
                          f"({out[key]['tie']['force_at_collapse_kN']:.4g} kN at collapse)")
         _print("with " + " and ".join(parts), out[key]["hinges"], frp)
+        if strips is not None and strips.masonry is not None:
+            print(f"    FRP bond factors (CNR-DT 200 R1/2013): {strips.bond.text(_named_masonry(args))}")
         for c in out[key]["crushing"] or []:
             print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
                   f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'not verified'})")
@@ -430,6 +475,12 @@ def register(sub) -> None:
     p.add_argument("--masonry", default=None, metavar="FM_MPA,FMT_MPA|TYPE",
                    help=f"the substrate's mean compressive and tensile strengths, or a type "
                         f"({', '.join(MASONRY_TYPES)}): the strips' debonding strengths")
+    for dest, field, _, unit, what in BOND_OPTIONS:
+        d = BondFactors().describe()[field]
+        shown = f"{d['value']:g}{'' if d['unit'] == '-' else ' ' + d['unit']}"
+        p.add_argument("--" + dest.replace("_", "-"), dest=dest, type=float, default=None, metavar=unit,
+                       help=f"CNR-DT 200 R1/2013 bond factor: {what} (default {shown}, UNVERIFIED against the "
+                            f"guideline: set it from your copy); strips designed on a --masonry, and noh-gumbad's")
     p.add_argument("--frp-face", default="extrados", choices=("extrados", "intrados"),
                    help="the ring face the strips are bonded to (default extrados)")
     p.add_argument("--tie", default=None, metavar="HEIGHT_M,AREA_MM2,FY_MPA[,PRESTRESS_KN]",

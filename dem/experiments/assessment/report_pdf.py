@@ -93,9 +93,20 @@ _OPTIONS = (("pier_height", "piers: height", "m"), ("pier_width", "piers: width"
             ("engine", "engine of the records", ""))
 
 
-def command_inputs(args, arch) -> list[tuple[str, object, str]]:
+def bond_rows(strips) -> list[tuple[str, object, str]]:
+    """The guideline's bond factors the ``strips`` were designed with (none without debonding, i.e.
+    without a masonry), each marked "unverified default" or "set by the user"."""
+    if strips is None or strips.masonry is None:
+        return []
+    return [(f"FRP bond factor {d['symbol']}", f"{d['value']:g} ({d['source']})", d["unit"])
+            for k, d in strips.bond.describe().items()
+            if k != "fmt_ratio" or strips.masonry.name != "given"]  # given f_mtm: no ratio used
+
+
+def command_inputs(args, arch, strips=None) -> list[tuple[str, object, str]]:
     """The inputs of ``archdem assess`` with their units: the arch's geometry and the options given
-    (those left unset are left out; the spectrum's are in the site table)."""
+    (those left unset are left out; the spectrum's are in the site table); with ``strips`` designed on
+    a masonry, the bond factors they used (:func:`bond_rows`)."""
     rows = [("structure", getattr(args, "id", None) or "parametric", "")] + _arch_rows(arch)
     for opt, label, unit in _OPTIONS:
         v = getattr(args, opt, None)
@@ -108,7 +119,7 @@ def command_inputs(args, arch) -> list[tuple[str, object, str]]:
         if opt == "building_damping" and getattr(args, "z_ratio", None) is None:
             continue
         rows.append((label, ", ".join(map(str, v)) if isinstance(v, list) else v, unit))
-    return rows
+    return rows + bond_rows(strips)
 
 
 def inputs_hash(label: str, inputs, spectrum: dict) -> str:
@@ -174,7 +185,8 @@ class _Layout:
         self.page.y += gap
 
     def heading(self, text: str, size: float = HEAD_PT) -> None:
-        self.need(3 * size * LEADING / 72)  # a heading never ends a page
+        # a heading never ends a page: room for it and the first lines of what it heads
+        self.need((2 * size + 6 * TABLE_PT) * LEADING / 72)
         self.page.y += 0.08
         width = int((PAGE_W - 2 * MARGIN) / (0.62 * size / 72))
         self.lines([_Line(t, size, bold=True, color="#5a4620") for t in textwrap.wrap(text, width)], gap=0.04)
@@ -462,7 +474,7 @@ def write_monument_pdf_report(path, monument, site, strips, FC: float | None = N
               + [("confidence factor FC", FC, "-"), ("behaviour factor q", q, "-"), ("limit state", limit_state, ""),
                  ("FRP: strength, thickness, width", f"{strips.strength / 1e6:g}, {strips.thickness * 1e3:g}, "
                                                      f"{strips.width * 1e3:g}", "MPa, mm, mm"),
-                 ("FRP: face", strips.face, "")]
+                 ("FRP: face", strips.face, "")] + bond_rows(strips)
               + ([] if height is None else [("height: z/H, T1, floors", f"{height.z_ratio:g}, {height.T1:g}, "
                                                                           f"{height.floors}", "-, s, -")])
               + ([] if sld_site is None else [("SLD hazard ag", sld_site.ag, "m/s^2")]))

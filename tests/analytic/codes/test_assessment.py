@@ -73,7 +73,7 @@ def test_the_trail_carries_every_step():
     blk = RockingBlock(0.05, 0.2)
     r = assess(blk, ec8(0.3 * G, "A"), FC, 2.0, "SLV", sld_site=ec8(0.1 * G, "A"))
     tr = {s["symbol"]: s for s in r.describe()["trail"]}
-    assert all(s["unit"] and s["formula"] for s in tr.values())
+    assert all(s["unit"] and s["formula"] and s["clause"].startswith("C8.") for s in tr.values())
     assert tr["M*"]["value"] == pytest.approx(blk.m) and tr["e*"]["value"] == pytest.approx(1.0)
     assert tr["M*"]["formula"] == "(sum m dx)^2 / sum m dx^2" and tr["a0*"]["value"] == r.linear.a0_star
     m, dx, dy, dth = tr["body 0: m, dx, dy, dtheta"]["value"]

@@ -1,9 +1,10 @@
 """FRP strips: the static LP with the strips' tension against the kinematic work of the same mechanism."""
 import math
+import re
 
 import pytest
 
-from analytic.codes.frp import Masonry, Strips, masonry_type, strengthened_collapse
+from analytic.codes.frp import BondFactors, Masonry, Strips, masonry_type, strengthened_collapse
 from analytic.rocking.linkage import RigidRotation, minimised_four_bar
 from specimens import get_specimen
 from specimens.constants import G
@@ -107,3 +108,74 @@ def test_debonding_strips_in_the_lp_and_the_mechanism():
     assert minimised_four_bar(arch).lam < sc.lam < strengthened_collapse(arch, rup).lam
     crush = sc.crushing(m, 1.35)
     assert len(crush) == len(sc.hinges) and all(c["C_kN"] > 0 and c["verified"] for c in crush)
+
+
+# ---- the guideline's bond factors as inputs (BondFactors: unverified defaults, overridable) ----
+
+def _noh_design(bond=None):
+    from analytic.codes.assessment import monument_strips
+    from specimens.monuments import MONUMENTS
+
+    return monument_strips(bond=bond).design(float(MONUMENTS["noh-gumbad"].arch.width))
+
+
+def test_the_default_bond_factors_give_todays_numbers():
+    """No override: the module constants, marked unverified, and Noh Gumbad's strips as before
+    (k_b 1.3237, Gamma_Fd 0.02499 N/mm, intermediate debonding 713.9 MPa, l_ed 194.8 mm, T 22.815 kN)."""
+    from analytic.codes import frp
+
+    b = BondFactors()
+    assert (b.k_G, b.k_G2, b.s_u, b.gamma_Rd, b.l_ed_min, b.fmt_ratio) == (
+        frp.K_G_END, frp.K_G_INTERMEDIATE, frp.SLIP_U, frp.GAMMA_RD, frp.L_ED_MIN, frp.MASONRY_TENSILE_RATIO)
+    assert b.all_default and all(v["source"] == "unverified default" for v in b.describe().values())
+    assert b.describe()["k_G"]["value"] == pytest.approx(0.031) and b.describe()["l_ed_min"]["unit"] == "mm"
+    assert "(set by the user)" not in b.text() and b.text().count("(unverified default)") == 6
+    d = _noh_design()
+    assert d.strips.bond == b and d == _noh_design(BondFactors())
+    assert round(d.k_b, 4) == 1.3237 and round(d.Gamma_Fd / 1e3, 5) == 0.02499
+    assert round(d.f_intermediate / 1e6, 1) == 713.9 and round(d.l_ed * 1e3, 1) == 194.8
+    assert round(d.force / 1e3, 3) == 22.815 and d.governing == "intermediate debonding"
+    # the trail names each factor's source
+    steps = d.describe()
+    assert all("unverified default" in steps[k]["formula"] for k in ("k_G", "k_G2", "s_u", "gamma_Rd", "l_ed_min"))
+    assert "unverified default" in steps["f_mtm"]["formula"]
+
+
+def test_an_override_moves_its_quantities_by_the_closed_form_amount():
+    base = _noh_design()
+    # Gamma_Fd = k_b k_G / FC sqrt(f_mm f_mtm): doubling k_G doubles it, f_end by sqrt(2), f_bd = 2 Gamma_Fd / s_u
+    # doubles too and l_ed ~ sqrt(Gamma_Fd) / f_bd falls by sqrt(2) (here to the 150 mm floor)
+    d = _noh_design(BondFactors.given(k_G=2 * 0.031e-3))
+    assert d.Gamma_Fd == pytest.approx(2 * base.Gamma_Fd, rel=1e-12)
+    assert d.f_end == pytest.approx(math.sqrt(2) * base.f_end, rel=1e-12)
+    assert d.l_ed == pytest.approx(max(base.l_ed / math.sqrt(2), 0.150), rel=1e-12)
+    assert d.Gamma_Fd2 == base.Gamma_Fd2 and d.force == base.force  # intermediate debonding is k_G2's
+    d2 = _noh_design(BondFactors.given(k_G2=2 * 0.093e-3))
+    assert d2.f_intermediate == pytest.approx(math.sqrt(2) * base.f_intermediate, rel=1e-12)
+    assert d2.force == pytest.approx(math.sqrt(2) * base.force, rel=1e-12)  # still below rupture
+    # l_ed = s_u pi sqrt(E_f t_f / (2 Gamma_Fd)) / (2 gamma_Rd) above its floor: proportional to s_u, 1 / gamma_Rd
+    assert _noh_design(BondFactors.given(s_u=0.8e-3)).l_ed == pytest.approx(2 * base.l_ed, rel=1e-12)
+    assert _noh_design(BondFactors.given(gamma_Rd=1.2)).l_ed == pytest.approx(base.l_ed * 1.5 / 1.2, rel=1e-12)
+    # the floor: the least optimal bond length given wins above the formula's value, and below it does nothing
+    assert _noh_design(BondFactors.given(l_ed_min=0.300)).l_ed == 0.300
+    assert _noh_design(BondFactors.given(l_ed_min=0.100)).l_ed == base.l_ed
+    # f_mtm = ratio f_mm of the named masonry: Gamma_Fd ~ sqrt(f_mtm)
+    d5 = _noh_design(BondFactors.given(fmt_ratio=0.2))
+    assert d5.strips.masonry.fmt == pytest.approx(2 * base.strips.masonry.fmt, rel=1e-12)
+    assert d5.Gamma_Fd == pytest.approx(math.sqrt(2) * base.Gamma_Fd, rel=1e-12)
+    # recorded as set by the user, the others as the unverified defaults
+    b = BondFactors.given(k_G=0.031e-3, s_u=None)  # set by hand to the default value: still the user's
+    assert b.describe()["k_G"]["source"] == "set by the user" and b.describe()["s_u"]["source"] == "unverified default"
+    assert BondFactors(gamma_Rd=1.2).source("gamma_Rd") == "set by the user"  # a changed value counts as set
+    steps = d.describe()
+    assert "set by the user" in steps["k_G"]["formula"] and "unverified default" in steps["k_G2"]["formula"]
+
+
+@pytest.mark.parametrize("kw, what", [({"k_G": 0.0}, "k_G"), ({"k_G2": -1e-4}, "k_G2"), ({"k_G": 0.031}, "k_G"),
+                                      ({"s_u": math.nan}, "s_u"), ({"gamma_Rd": 0.5}, "gamma_Rd"),
+                                      ({"l_ed_min": 5.0}, "l_ed_min"), ({"fmt_ratio": 0.5}, "f_mtm/f_mm"),
+                                      ({"l_ed_min": True}, "l_ed_min"), ({"s_u": "0.4"}, "s_u")])
+def test_a_bad_bond_factor_is_refused_in_one_line(kw, what):
+    with pytest.raises(ArchdemInputError, match=f"FRP bond factor {re.escape(what)} ") as e:
+        BondFactors(**kw)
+    assert "\n" not in str(e.value)

@@ -157,8 +157,9 @@ def campaign(tmp_path_factory):
         yield {"out": out, "specimens": specimens, "manifest": manifest, "log": log, "stand": stand}
 
 
-def _rows(out: Path, name: str) -> list[dict]:
-    with open(out / name / f"{name}.csv", newline="") as fh:
+def _rows(out: Path, name: str, table: str | None = None) -> list[dict]:
+    """The rows of step ``name``'s table ``table`` (default the step's own, ``name/name.csv``)."""
+    with open(out / name / f"{table or name}.csv", newline="") as fh:
         return list(csv.DictReader(fh))
 
 
@@ -550,6 +551,59 @@ def test_record_findings_agree_with_the_table(campaign):
     assert _quotes(m[2], float(r["collapse_pga_g"]), 3)
     assert _quotes(m[3], float(r["scale_factor"]), 2)
     assert _quotes(m[4], float(r["ratio_to_static"]), 2)
+
+
+# ----------------------------------------------------------------------------- assessment checks
+def _half_unit(text: str) -> float:
+    """Half a unit in the last written place of the number ``text`` (``1.25e-3``: of its mantissa)."""
+    mant, _, exp = text.lower().partition("e")
+    places = len(mant.split(".")[1]) if "." in mant else 0
+    return 0.5 * 10.0 ** (-places + (int(exp) if exp else 0))
+
+
+def _assert_index_is_its_pair(rows: list[dict], demand: str, capacity: str, where: str) -> int:
+    """Every row: the written safety index is capacity / demand of the two numbers written beside it
+    (to their written precision, and at least to 1e-9 when they are written in full), and the
+    verdict is index >= 1."""
+    for r in rows:
+        dem, cap, idx = float(r[demand]), float(r[capacity]), float(r["safety_index"])
+        assert dem > 0 and cap >= 0 and math.isfinite(idx), (where, r)
+        ratio = cap / dem
+        tol = ratio * (_half_unit(r[capacity]) / cap + _half_unit(r[demand]) / dem) + _half_unit(r["safety_index"])
+        assert abs(idx - ratio) <= max(tol, 1e-9 * abs(ratio)), (where, r)
+        assert r["verdict"] in ("verified", "not verified"), (where, r)
+        assert (r["verdict"] == "verified") == (idx >= 1), (where, r)
+    return len(rows)
+
+
+def test_every_index_of_the_assessment_step_is_its_written_pair(campaign):
+    """``assess/checks.csv``: for every check of every configuration, with and without strips, the
+    index recomputes as capacity / demand from the two values the table writes, and the verdict is
+    index >= 1; the table holds every check the step's configurations ran."""
+    rows = _rows(campaign["out"], "assess", "checks")
+    n = _assert_index_is_its_pair(rows, "demand_value", "capacity_value", "assess/checks.csv")
+    configs = {(r["configuration"], r["frp"]) for r in _rows(campaign["out"], "assess")}
+    assert {(r["configuration"], r["frp"]) for r in rows} == configs and n >= 3 * len(configs)
+
+
+def test_every_index_of_the_drawing_step_is_its_written_pair(tmp_path):
+    """``drawing/drawing-assessment.csv`` (the optional step, not in the stand-in campaign: run here with
+    its DEM tilt replaced by a stand-in, its code checks real): index = capacity / demand, verdict."""
+    from types import SimpleNamespace
+
+    from dem.experiments.assessment import step_drawing as sd
+
+    ctx = CampaignContext(out=tmp_path, specimens=[], quick=True, workers=1, log=lambda *_: None)
+    d = tmp_path / "drawing"
+    d.mkdir()
+    stand_in = SimpleNamespace(lam=0.5, mode="rocking", joints=[])
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(sd, "tilt", lambda *a, **kw: stand_in)
+        sd.step_drawing(ctx, d)
+    with open(d / "drawing-assessment.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert _assert_index_is_its_pair(rows, "demand", "capacity", "drawing/drawing-assessment.csv") == 3
+    assert [r["kind"] for r in rows] == ["activation", "linear", "non-linear"]
 
 
 # ----------------------------------------------------------------------------- report and HDF5

@@ -265,3 +265,104 @@ def test_noh_gumbad_takes_a_tie_the_sld_hazard_a_height_and_a_report(capsys, tmp
     # --report is not refused for the built-in case (what it writes belongs to the report's handling)
     assert main(["assess", "noh-gumbad", "--report", str(tmp_path / "r.html")]) == 0
     capsys.readouterr()
+
+
+# ---- the guideline's bond factors: options, unverified defaults, recorded ----
+
+DEBONDING = ["--frp", "2000,0.05,50", "--frp-modulus", "230", "--masonry", "3,0.3"]
+
+
+@pytest.mark.slow  # five strengthened mechanisms
+def test_the_bond_factor_options_on_an_arch(capsys):
+    """Without an override the strips' design is the library's defaults, marked unverified; --frp-kG 0.062
+    doubles Gamma_Fd (Gamma_Fd ~ k_G), --frp-led-min sets the floor of l_ed; the factors are in the JSON,
+    the design's steps and one terminal line."""
+    from analytic.codes.frp import BondFactors, Masonry, Strips
+
+    base = _json(capsys, ["assess", "Sh06-Sd015", *NTC, *DEBONDING, "--json"])["frp"]["strips"]
+    lib = Strips(2000e6, 0.05e-3, 0.05, modulus=230e9, masonry=Masonry(3e6, 0.3e6, "given"),
+                 bond=BondFactors()).describe(get_arch_width())
+    assert base["design"] == lib["design"] and base["bond_factors"] == BondFactors().describe()
+    assert {v["source"] for v in base["bond_factors"].values()} == {"unverified default"}
+    d = _json(capsys, ["assess", "Sh06-Sd015", *NTC, *DEBONDING, "--frp-kG", "0.062", "--frp-led-min", "400",
+                       "--json"])["frp"]["strips"]
+    assert d["design"]["Gamma_Fd"]["value"] == pytest.approx(2 * base["design"]["Gamma_Fd"]["value"], rel=1e-12)
+    assert d["design"]["f_end"]["value"] == pytest.approx(2 ** 0.5 * base["design"]["f_end"]["value"], rel=1e-12)
+    assert d["design"]["l_ed"]["value"] == pytest.approx(400) and base["design"]["l_ed"]["value"] < 400
+    assert d["bond_factors"]["k_G"] == {"symbol": "k_G", "value": pytest.approx(0.062), "unit": "mm",
+                                        "source": "set by the user"}
+    assert d["bond_factors"]["k_G2"]["source"] == "unverified default"
+    assert "set by the user" in d["design"]["k_G"]["formula"] and "set by the user" in d["design"]["l_ed_min"]["formula"]
+    assert main(["assess", "Sh06-Sd015", *NTC, *DEBONDING, "--frp-su", "0.3"]) == 0
+    line = [x for x in capsys.readouterr().out.splitlines() if "bond factors" in x]
+    assert len(line) == 1 and "s_u 0.3 mm (set by the user)" in line[0] and "k_G 0.031 mm (unverified default)" in line[0]
+    assert "f_mtm/f_mm" not in line[0]  # --masonry gave f_mtm: no ratio used
+    # a named masonry type takes f_mtm = ratio f_mm: Gamma_Fd ~ sqrt(f_mtm)
+    named = ["--frp", "2000,0.05,50", "--frp-modulus", "230", "--masonry", "solid-brick-lime"]
+    t0 = _json(capsys, ["assess", "Sh06-Sd015", *NTC, *named, "--json"])["frp"]["strips"]
+    t1 = _json(capsys, ["assess", "Sh06-Sd015", *NTC, *named, "--frp-fmt-ratio", "0.2", "--json"])["frp"]["strips"]
+    assert t1["masonry"]["fmt_MPa"] == pytest.approx(2 * t0["masonry"]["fmt_MPa"], rel=1e-12)
+    assert t1["design"]["Gamma_Fd"]["value"] == pytest.approx(2 ** 0.5 * t0["design"]["Gamma_Fd"]["value"], rel=1e-12)
+
+
+def get_arch_width() -> float:
+    from specimens import get_specimen
+
+    return float(get_specimen("Sh06-Sd015").arch.width)
+
+
+@pytest.mark.parametrize("extra, words", [
+    (["--frp-kG", "0.05"], "--frp-kG does nothing here"),  # no strips
+    (["--frp-gamma-rd", "1.2"], "--frp-gamma-rd does nothing here"),
+    (["--frp", "2000,0.05,50", "--frp-su", "0.3"], "--frp-su does nothing here"),  # strips without debonding
+    ([*DEBONDING, "--frp-fmt-ratio", "0.2"], "--frp-fmt-ratio does nothing here"),  # f_mtm given
+    ([*DEBONDING, "--frp-kG", "-0.031"], "FRP bond factor k_G"),
+    ([*DEBONDING, "--frp-gamma-rd", "0.5"], "FRP bond factor gamma_Rd"),
+    ([*DEBONDING, "--frp-led-min", "nan"], "FRP bond factor l_ed_min"),
+    ([*DEBONDING, "--frp-kG2", "5"], "FRP bond factor k_G2"),
+])
+def test_a_bond_factor_out_of_place_or_range_exits_2(capsys, extra, words):
+    assert main(["assess", "Sh06-Sd015", *NTC, *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert words in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.slow  # three configurations, twice
+def test_noh_gumbad_takes_the_bond_factors(capsys):
+    """The built-in monument's strips: today's numbers without an override, the factors recorded; an
+    override refused when the strips it would design are not debonding ones."""
+    d = _json(capsys, ["assess", "noh-gumbad", "--json"])["strips"]
+    assert f"{d['design']['k_b']['value']:.4f}" == "1.3237" and f"{d['design']['Gamma_Fd']['value']:.5f}" == "0.02499"
+    assert f"{d['design']['f_intermediate']['value']:.1f}" == "713.9" and f"{d['design']['l_ed']['value']:.1f}" == "194.8"
+    assert f"{d['force_N'] / 1e3:.3f}" == "22.815"
+    assert {v["source"] for v in d["bond_factors"].values()} == {"unverified default"}
+    o = _json(capsys, ["assess", "noh-gumbad", "--frp-kG2", "0.0465", "--json"])["strips"]
+    # f_fdd2 ~ sqrt(k_G2): half of k_G2 leaves 1/sqrt(2) of the intermediate debonding strength, and of the force
+    assert o["design"]["f_intermediate"]["value"] == pytest.approx(d["design"]["f_intermediate"]["value"] / 2 ** 0.5,
+                                                                   rel=1e-12)
+    assert o["force_N"] == pytest.approx(d["force_N"] / 2 ** 0.5, rel=1e-12)
+    assert o["bond_factors"]["k_G2"]["source"] == "set by the user"
+    assert main(["assess", "noh-gumbad", "--frp", "1964,0.047,680", "--frp-kG", "0.05"]) == 2  # no --masonry
+    assert "--frp-kG does nothing here" in capsys.readouterr().err
+    assert main(["assess", "noh-gumbad", "--masonry", "3,0.3", "--frp-fmt-ratio", "0.2"]) == 2
+    assert "--frp-fmt-ratio does nothing here" in capsys.readouterr().err
+
+
+def test_the_pdf_inputs_list_the_bond_factors():
+    """The report's inputs list the bond factors the strips were designed with, each with its source; none
+    without debonding, and no tensile ratio where --masonry gave f_mtm."""
+    import argparse
+
+    from analytic.codes.frp import BondFactors, Masonry, Strips
+    from dem.experiments.assessment.report_pdf import command_inputs
+    from specimens import get_specimen
+
+    arch = get_specimen("Sh06-Sd015").arch
+    args = argparse.Namespace(id="Sh06-Sd015", frp="2000,0.05,50", frp_modulus=230.0, masonry="3,0.3")
+    s = Strips(2000e6, 0.05e-3, 0.05, modulus=230e9, masonry=Masonry(3e6, 0.3e6, "given"),
+               bond=BondFactors.given(s_u=0.3e-3))
+    rows = {r[0]: r for r in command_inputs(args, arch, s)}
+    assert rows["FRP bond factor s_u"][1:] == ("0.3 (set by the user)", "mm")
+    assert rows["FRP bond factor k_G"][1:] == ("0.031 (unverified default)", "mm")
+    assert "FRP bond factor f_mtm/f_mm" not in rows
+    assert not [r for r in command_inputs(args, arch, Strips(2000e6, 0.05e-3, 0.05)) if "bond" in r[0]]
