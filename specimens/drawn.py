@@ -47,7 +47,8 @@ RELATIVE_TOLERANCE = 1e-5
 GAP_FRACTION = 0.25
 #: The configuration of a drawn assembly: its bodies are as drawn (no glued or free crown).
 DRAWN_CONFIG = "drawn"
-#: Most blocks a drawing may hold (each adds a body and joints to every analysis).
+#: Most blocks a drawing may hold (each adds a body and joints to every analysis): a surveyed arch, bridge or
+#: wall drawn block by block holds tens to a few hundred; thousands come from a mistake (a hatch or mesh exploded).
 MAX_BLOCKS = 2000
 #: Parameters of a parametric arch that a drawn assembly does not have (see DrawnAssembly.__getattr__).
 ARCH_ONLY = frozenset({"Ri", "Re", "e", "t", "Sh", "Sd", "Rc", "Rp", "span", "rise", "psi_i", "psi_e", "width",

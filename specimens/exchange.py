@@ -15,17 +15,20 @@ writers used (a drawing that states no density is :data:`specimens.constants.DRA
 """
 from __future__ import annotations
 
+import contextlib
 import csv
 import hashlib
+import logging
 import math
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
 
 from specimens.blocks import Assembly
-from specimens.constants import DRAWN_DENSITY
-from specimens.drawn import DrawnAssembly, DrawnBlock, _merge, _point_in, _self_intersects, assemble
+from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M
+from specimens.drawn import MAX_BLOCKS, DrawnAssembly, DrawnBlock, _merge, _point_in, _self_intersects, assemble
 from specimens.errors import ArchdemInputError
 from specimens.io import atomic_path
 from specimens.sections import polygon_properties, signed_area
@@ -35,7 +38,10 @@ UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
 #: DXF $INSUNITS codes of those units (0: unitless).
 DXF_UNITS = {1: "in", 2: "ft", 4: "mm", 5: "cm", 6: "m"}
 FORMATS = {".dxf": "dxf", ".csv": "csv", ".obj": "obj", ".stl": "stl"}
-_DEPTH = re.compile(r"depth[ _-]*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)", re.IGNORECASE)
+# a hyphen right after "depth" separates (piers-depth-600); a minus after a space or another hyphen is a sign
+_DEPTH = re.compile(r"depth(?:-|[ _]*)([-+]?(?:[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?|inf(?:inity)?|nan))", re.IGNORECASE)
+#: DXF entities a drawing's reader takes; any other on a layer of blocks, supports or pieces is refused.
+DXF_TAKEN = ("LWPOLYLINE", "POLYLINE", "TEXT", "MTEXT")
 _META_KEYS = ("length_scale", "size", "density")
 #: The example structure shipped with archdem: a pointed arch on piers as built (specimens/data/README.md).
 EXAMPLE_DRAWING = Path(__file__).resolve().parent / "data" / "survey-arch-on-piers.dxf"
@@ -57,6 +63,50 @@ def layer_depth(layer: str) -> float | None:
     """The depth a layer name states (``... depth 300``), in the drawing's units, or None."""
     m = _DEPTH.search(layer)
     return float(m.group(1)) if m else None
+
+
+def _layer_depth(layer: str, path: Path) -> float | None:
+    """:func:`layer_depth`, refused in one line unless a positive finite number."""
+    d = layer_depth(layer)
+    if d is not None and not (math.isfinite(d) and d > 0):
+        raise ArchdemInputError(f"{path.name}: layer {layer!r} states depth {d:g}; a depth must be a positive length")
+    return d
+
+
+def _check_size(path: Path, n_blocks: int, pts: np.ndarray, scale: float, depths=()) -> None:
+    """The drawing's bounds, checked before any work: at most MAX_BLOCKS blocks; finite coordinates;
+    an extent and depths of at most MAX_LENGTH_M (the longest length an option takes)."""
+    if n_blocks > MAX_BLOCKS:
+        raise ArchdemInputError(f"{path.name}: the drawing holds {n_blocks} blocks, more than {MAX_BLOCKS}")
+    pts = np.asarray(pts, float)
+    if pts.size and not np.all(np.isfinite(pts)):
+        raise ArchdemInputError(f"{path.name}: the drawing holds coordinates that are not finite numbers")
+    ext = float(np.ptp(pts.reshape(len(pts), -1), axis=0).max()) * scale if pts.size else 0.0
+    if not ext <= MAX_LENGTH_M:
+        raise ArchdemInputError(f"{path.name}: the drawing is {ext:.3g} m across, more than {MAX_LENGTH_M:g} m "
+                                "(are its units right?)")
+    big = [d for d in depths if d is not None and not d * scale <= MAX_LENGTH_M]
+    if big:
+        raise ArchdemInputError(f"{path.name}: a layer states a depth of {big[0] * scale:.3g} m, more than "
+                                f"{MAX_LENGTH_M:g} m (are its units right?)")
+
+
+@contextlib.contextmanager
+def _quiet(logger_name: str):
+    """A library's log records and warnings kept off the terminal while it reads a file (a bad file is
+    refused in one line)."""
+    log = logging.getLogger(logger_name)
+    null = logging.NullHandler()
+    propagate = log.propagate
+    log.addHandler(null)
+    log.propagate = False
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            yield
+    finally:
+        log.propagate = propagate
+        log.removeHandler(null)
 
 
 def _units(stated: str | None, option: str | None, path: Path) -> float:
@@ -91,6 +141,16 @@ def read_assembly(path: str | Path, units: str | None = None, depth: float | Non
     if depth is not None and not (isinstance(depth, (int, float)) and math.isfinite(depth) and depth > 0):
         raise ArchdemInputError(f"depth must be a positive length in m, got {depth!r}")
     reader = {"dxf": _read_dxf, "csv": _read_csv, "obj": _read_mesh, "stl": _read_mesh}[fmt]
+    try:
+        return _read(p, fmt, reader, units, depth, density, tol, up)
+    except ArchdemInputError as exc:  # every refusal of a drawing names the file
+        msg = str(exc)
+        if msg.startswith((p.name, str(p))):
+            raise
+        raise ArchdemInputError(f"{p.name}: {msg}") from None
+
+
+def _read(p: Path, fmt: str, reader, units, depth, density, tol, up) -> DrawnAssembly:
     data = reader(p, units, up)
     scale = data["scale"]
     meta = data.get("meta", {})
@@ -133,10 +193,19 @@ def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
 
     if up is not None:
         raise ArchdemInputError("a DXF drawing's vertical axis is found from its plane: drop up")
-    try:
-        doc = ezdxf.readfile(str(path))
-    except (OSError, DXFError, UnicodeError, ValueError) as exc:
-        raise ArchdemInputError(f"{path.name}: not a readable DXF file ({type(exc).__name__})") from None
+    try:  # a truncated or damaged file: ezdxf raises these (StopIteration from its tag reader)
+        with _quiet("ezdxf"):
+            doc = ezdxf.readfile(str(path))
+            return _dxf_drawing(doc, path, units)
+    except ArchdemInputError:
+        raise
+    except (OSError, DXFError, UnicodeError, ValueError, StopIteration, TypeError, AttributeError, KeyError,
+            IndexError, OverflowError) as exc:
+        why = (str(exc).strip().splitlines() or [""])[0][:120] or type(exc).__name__
+        raise ArchdemInputError(f"{path.name}: not a readable DXF file, truncated or damaged ({why})") from None
+
+
+def _dxf_drawing(doc, path: Path, units: str | None) -> dict:
     code = int(doc.header.get("$INSUNITS", 0) or 0)
     if code and code not in DXF_UNITS:
         raise ArchdemInputError(f"{path.name}: drawing units $INSUNITS = {code} are not a length archdem reads "
@@ -144,9 +213,13 @@ def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
     stated = DXF_UNITS.get(code)
     scale = _units(stated, units, path)
     polys3, labels3, joints3 = [], [], []
+    n_blocks = 0
     for e in doc.modelspace():
         kind = e.dxftype()
         layer = str(e.dxf.get("layer", "0"))
+        if kind not in DXF_TAKEN and role(layer) != "joints":
+            raise ArchdemInputError(f"{path.name}: {kind} {e.dxf.get('handle', '?')} on layer {layer!r}: archdem reads "
+                                    "blocks as closed polylines with straight sides (draw a curve as chords)")
         if kind in ("LWPOLYLINE", "POLYLINE"):
             pts, closed = _dxf_points(e, path)
             if not closed:
@@ -156,6 +229,9 @@ def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
                     raise ArchdemInputError(f"{path.name}: open polyline on layer {layer!r} (handle {e.dxf.handle}); "
                                             "every block is a closed outline")
             polys3.append((layer, pts))
+            n_blocks += role(layer) == "blocks"
+            if n_blocks > MAX_BLOCKS:  # refused before the rest is read
+                _check_size(path, n_blocks, pts, scale)
         elif kind in ("TEXT", "MTEXT"):
             text = (e.plain_text() if kind == "MTEXT" else e.dxf.text).strip()
             ins = np.array(e.dxf.insert, float)
@@ -163,6 +239,7 @@ def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
     if not polys3:
         raise ArchdemInputError(f"{path.name}: no closed polylines (one per block) in the drawing")
     allp = np.vstack([p for _, p in polys3])
+    _check_size(path, n_blocks, allp, scale, [_layer_depth(layer, path) for layer, _ in polys3 if role(layer) == "blocks"])
     ax = _plane(allp, path)
     to2 = lambda q: np.asarray(q, float)[..., ax]  # noqa: E731
     blocks, supports, pieces = [], [], []
@@ -176,7 +253,7 @@ def _read_dxf(path: Path, units: str | None, up: str | None) -> dict:
         elif r == "joints":
             continue
         else:
-            blocks.append((q, layer_depth(layer)))
+            blocks.append((q, _layer_depth(layer, path)))
     meta = {}
     for k in _META_KEYS:
         v = doc.header.custom_vars.get(f"archdem:{k}")
@@ -280,6 +357,8 @@ def _read_csv(path: Path, units: str | None, up: str | None) -> dict:
                 raise ArchdemInputError(f"{path.name}: block {key[0]!r} appears in two places (row {n}); "
                                         "list each block's vertices together")
             runs.append((key[0], key[1], [(x, z)]))
+    _check_size(path, sum(role(lay) == "blocks" for _, lay, _ in runs), np.array([p for *_, ps in runs for p in ps]),
+                scale, [_layer_depth(lay, path) for _, lay, _ in runs if role(lay) == "blocks"])
     blocks, supports, joints, pieces = [], [], [], {}
     for name, layer, pts in runs:
         q = np.array(pts, float)
@@ -292,7 +371,7 @@ def _read_csv(path: Path, units: str | None, up: str | None) -> dict:
             owner = name.rsplit("/", 1)[0]
             pieces.setdefault(owner, []).append(q)
         else:
-            blocks.append((name, q, layer_depth(layer)))
+            blocks.append((name, q, _layer_depth(layer, path)))
     names = {n for n, _, _ in blocks}
     for owner in pieces:
         if owner not in names:
@@ -314,6 +393,7 @@ def _read_mesh(path: Path, units: str | None, up: str | None) -> dict:
     if not objects:
         raise ArchdemInputError(f"{path.name}: no meshes in the file")
     allv = np.vstack([v for _, v in objects])
+    _check_size(path, len({n.split("/")[0] for n, _ in objects if role(n) == "blocks"}), allv, scale)
     # the out-of-plane axis: each block's vertices take two values along it (its two faces)
     deep = [k for k in range(3) if all(len(np.unique(v[:, k])) == 2 for n, v in objects if role(n) != "joints")]
     if not deep:
@@ -444,8 +524,9 @@ def _obj_objects(path: Path) -> tuple[list[tuple[str, np.ndarray]], dict]:
     out = []
     for key, idx in objs:
         v = V[sorted(idx)]
-        if not trimesh.Trimesh(v, process=False).vertices.size:  # pragma: no cover - trimesh sanity
-            continue
+        with _quiet("trimesh"):
+            if not trimesh.Trimesh(v, process=False).vertices.size:  # pragma: no cover - trimesh sanity
+                continue
         out.append((key, v))
     return out, meta
 
@@ -456,7 +537,8 @@ def _stl_objects(path: Path) -> list[tuple[str, np.ndarray]]:
     import trimesh
 
     try:
-        mesh = trimesh.load(str(path), file_type="stl", force="mesh")
+        with _quiet("trimesh"):
+            mesh = trimesh.load(str(path), file_type="stl", force="mesh")
     except Exception as exc:  # trimesh raises many types on garbage; all mean the same to the user
         raise ArchdemInputError(f"{path.name}: not a readable STL file ({type(exc).__name__})") from None
     if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:

@@ -15,13 +15,18 @@ Every reader returns acceleration in m/s^2 as :class:`analytic.motions.inputs.Sa
 (``g`` is converted with :data:`specimens.constants.G`). Units written in a file win; a
 declared ``units`` that contradicts the file is an error (it is almost always a mistake).
 Malformed files raise :class:`ArchdemInputError` with a one-line message
-``FILE:LINE: problem``. This module does file I/O only; the processing functions
-(:func:`baseline_correct`, :func:`resample`, :func:`with_zero_tail`) are pure.
+``FILE:LINE: problem``; so are files past the size bounds (:data:`MAX_RECORD_BYTES`,
+:data:`MAX_RECORD_SAMPLES`, :data:`MAX_RECORD_S`), before they are parsed. This module does file
+I/O only; the processing functions (:func:`baseline_correct`, :func:`resample`, :func:`with_zero_tail`)
+are pure.
 """
 from __future__ import annotations
 
+import itertools
 import math
+import os
 import re
+import stat
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
@@ -29,7 +34,7 @@ from pathlib import Path
 import numpy as np
 from numpy.polynomial import Polynomial
 
-from analytic.motions.inputs import GroundMotion, SampledMotion, SinePulse
+from analytic.motions.inputs import MIN_PEAK_ACCELERATION, GroundMotion, SampledMotion, SinePulse
 from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
@@ -72,8 +77,15 @@ class _Src:
     def __init__(self, path: Path):
         self.path = path
         try:
-            with open(path, "r", encoding="utf-8", errors="replace", newline=None) as fh:
-                self.lines = fh.read().splitlines()
+            with open(path, "rb") as fh:  # at most MAX_RECORD_BYTES + 1 bytes, never the whole of /dev/zero
+                st = os.fstat(fh.fileno())
+                if stat.S_ISREG(st.st_mode) and st.st_size > MAX_RECORD_BYTES:
+                    raise self._too_big(f"is {st.st_size / 2**20:.0f} MB, more")
+                data = fh.read(MAX_RECORD_BYTES + 1)
+                if len(data) > MAX_RECORD_BYTES:
+                    raise self._too_big("holds more")
+            # as text mode with universal newlines: \r\n and \r end lines too
+            self.lines = data.decode("utf-8", errors="replace").splitlines()
         except FileNotFoundError:
             raise ArchdemInputError(f"{path}: no such file") from None
         except IsADirectoryError:
@@ -81,13 +93,17 @@ class _Src:
         except OSError as exc:
             raise ArchdemInputError(f"{path}: cannot read ({exc.strerror})") from None
 
+    def _too_big(self, what: str) -> ArchdemInputError:
+        return ArchdemInputError(f"{self.path}: {what} than the {MAX_RECORD_BYTES // 2**20} MB a record file may "
+                                 "have (not a record?); cut the record")
+
     def error(self, lineno: int | None, msg: str) -> ArchdemInputError:
         where = f"{self.path}:{lineno}" if lineno else f"{self.path}"
         return ArchdemInputError(f"{where}: {msg}")
 
-    def nonblank(self, start: int = 0) -> list[tuple[int, str]]:
-        """(1-based line number, text) of the non-blank lines from index ``start``."""
-        return [(i + 1, s) for i, s in enumerate(self.lines[start:], start) if s.strip()]
+    def nonblank(self, start: int = 0, limit: int | None = None) -> list[tuple[int, str]]:
+        """(1-based line number, text) of the non-blank lines from index ``start`` (the first ``limit``)."""
+        return list(itertools.islice(((i + 1, s) for i, s in enumerate(self.lines[start:], start) if s.strip()), limit))
 
 
 def _float(src: _Src, lineno: int, token: str) -> float:
@@ -128,6 +144,21 @@ def _resolve_units(src: _Src, header_units: str | None, declared: str | None, li
 RECORD_DT_RANGE = (1e-5, 1.0)  # s
 MIN_RECORD_S = 0.01  # s: 20 steps of the default simulator step
 MAX_RECORD_PGA_G = 20.0
+#: Size bounds of a record file, each far above a real one (docs/decisions/010-input-rules.md#record-size-and-run-length):
+#: they bound the work of a reader and of a run before any of it is done.
+MAX_RECORD_BYTES = 64 * 2**20  # real record files are < 5 MB; 1 M samples of a 2-column CSV fit in it
+MAX_RECORD_SAMPLES = 1_000_000  # 10 x a real record (< 100 000 samples)
+MAX_RECORD_S = 1200.0  # s: twice a real record (< 600 s)
+
+
+def _check_size(src: _Src, lineno: int | None, npts: int, dt: float | None = None) -> None:
+    """Refuse a record with more samples, or lasting longer, than the bounds above."""
+    if npts > MAX_RECORD_SAMPLES:
+        raise src.error(lineno, f"{npts} samples, more than the {MAX_RECORD_SAMPLES} a record may hold; "
+                                "cut the record")
+    if dt is not None and RECORD_DT_RANGE[0] <= dt <= RECORD_DT_RANGE[1] and (npts - 1) * dt > MAX_RECORD_S:
+        raise src.error(lineno, f"the record lasts {(npts - 1) * dt:g} s, more than the {MAX_RECORD_S:g} s a record "
+                                "may last; cut the record")
 
 
 def _motion(src: _Src, values: list[float], dt: float, units: str, name: str, fmt: str, dt_line: int) -> SampledMotion:
@@ -140,10 +171,13 @@ def _motion(src: _Src, values: list[float], dt: float, units: str, name: str, fm
         raise src.error(dt_line, f"a record needs at least 2 samples, got {len(values)}")
     if (len(values) - 1) * dt < MIN_RECORD_S:
         raise src.error(dt_line, f"the record lasts {(len(values) - 1) * dt:g} s, less than {MIN_RECORD_S:g} s")
-    v = np.asarray(values, dtype=float) * UNIT_FACTORS[units]
-    pga_g = float(np.max(np.abs(v))) / G
+    _check_size(src, dt_line, len(values), dt)
+    raw = np.asarray(values, dtype=float)
+    # the peak in g before any scaling: a factor to g is <= 1, so an absurd value (1e308 g) cannot overflow
+    pga_g = float(np.max(np.abs(raw))) * (UNIT_FACTORS[units] / G)
     if not (math.isfinite(pga_g) and pga_g <= MAX_RECORD_PGA_G):
         raise src.error(dt_line, f"peak acceleration {pga_g:.3g} g is above {MAX_RECORD_PGA_G:g} g (wrong units?)")
+    v = raw * UNIT_FACTORS[units]
     return SampledMotion(v, dt, name=" ".join(name.split()), source=f"{src.path.name} ({fmt})")
 
 
@@ -183,6 +217,7 @@ def _read_at2(src: _Src, units: str | None) -> Record:
         dt = math.nan
     if not (math.isfinite(dt) and dt > 0):
         raise src.error(l_n, f"DT must be a positive time step in s, got {dt_s!r}")
+    _check_size(src, l_n, npts, dt)
     values: list[float] = []
     last = None
     for ln, text in rows[4:]:
@@ -227,6 +262,7 @@ def _read_smc(src: _Src, units: str | None) -> Record:
     sps = reals[1]
     if not (0 < sps < 1e30):
         raise src.error(18, f"bad sampling rate {sps!r} samples/s in the real header")
+    _check_size(src, 13, npts, 1.0 / sps)
     start = n_hdr + n_comments
     if len(L) < start:
         raise src.error(len(L), f"file ends inside its {n_comments} comment lines")
@@ -290,6 +326,7 @@ def _read_esm(src: _Src, units: str | None) -> Record:
         raise src.error(l_n, f"NDATA is not an integer: {n_s!r}") from None
     l_dt, dt_s = hdr["SAMPLING_INTERVAL_S"]
     dt = _float(src, l_dt, dt_s)
+    _check_size(src, l_n, npts, dt)
     header_units, l_u = None, None
     if "UNITS" in hdr:
         l_u, u_s = hdr["UNITS"]
@@ -319,6 +356,10 @@ def _read_csv(src: _Src, units: str | None) -> Record:
     a: list[float] = []
     rows_t: list[int] = []
     first_data = None
+    if len(src.lines) - 1 > MAX_RECORD_SAMPLES:  # refused before parsing a million lines; one may be the header
+        n_rows = sum(bool(x) and not x.startswith("#") for x in map(str.strip, src.lines))
+        if n_rows - 1 > MAX_RECORD_SAMPLES:
+            _check_size(src, None, n_rows - 1)
     for ln, text in src.nonblank():
         s = text.strip()
         if s.startswith("#"):
@@ -364,7 +405,7 @@ _READERS = {"at2": _read_at2, "smc": _read_smc, "esm": _read_esm, "csv": _read_c
 def detect_format(src_or_path) -> str:
     """Format of a record file from its content; the extension only when the content is inconclusive."""
     src = src_or_path if isinstance(src_or_path, _Src) else _Src(Path(src_or_path))
-    rows = src.nonblank()
+    rows = src.nonblank(limit=80)  # the head tells
     if not rows:
         raise src.error(None, "empty file")
     if "ACCELEROGRAM" in src.lines[0].upper() and len(src.lines) > 12 and re.match(r"^\s*-?\d+(\s+-?\d+){7}\s*$", src.lines[11]):
@@ -489,6 +530,9 @@ def ground_motion(sine: float | None = None, amplitude: float | None = None, rec
         if amplitude is None:
             raise ArchdemInputError("--sine needs --amplitude A_G (in g)")
         positive("--amplitude", amplitude)
+        if amplitude * G < MIN_PEAK_ACCELERATION:  # the floor of a record's peak holds for a sine too
+            raise ArchdemInputError(f"--amplitude {amplitude:g} g is below {MIN_PEAK_ACCELERATION / G:g} g, an "
+                                    "accelerometer's resolution: it moves nothing")
         given = [n for n, v in (("--scale", scale), ("--pga", pga), ("--units", units), ("--baseline", baseline or None))
                  if v is not None]
         if given:  # each would do nothing to a sine

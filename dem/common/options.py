@@ -16,8 +16,8 @@ from dem.core.engines import available_engines
 from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
-from specimens.constants import DRAWN_DENSITY
-from specimens.drawn import DRAWN_CONFIG, DrawnAssembly, gaps_text
+from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M, MIN_LENGTH_M  # lengths an option takes [m]
+from specimens.drawn import DRAWN_CONFIG, MAX_BLOCKS, DrawnAssembly, gaps_text
 from specimens.errors import ArchdemInputError
 from specimens.exchange import UNITS, read_assembly
 from specimens.geometry import PointedArch
@@ -25,8 +25,6 @@ from specimens.io import can_make_dir, check_name, json_default, unique_run_path
 from specimens.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
-#: Lengths an arch option takes [m] (a typo such as --Rc 1e30 is refused, not simulated).
-MIN_LENGTH_M, MAX_LENGTH_M = 1e-3, 1000.0
 #: Densities the commands take [kg/m^3].
 DENSITY_RANGE = (1.0, 1e5)
 
@@ -81,7 +79,8 @@ def add_geometry_arguments(p: argparse.ArgumentParser) -> None:
     is the arch's option (read by :func:`geometry_from_args` where the command has it)."""
     g = p.add_argument_group("a structure from a drawing instead (docs/physics/geometry.md#16-assemblies-from-drawings)")
     g.add_argument("--geometry", default=None, metavar="FILE",
-                   help="blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl (convex prisms)")
+                   help="blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl (convex prisms); "
+                        f"at most {MAX_BLOCKS} blocks and {MAX_LENGTH_M:g} m across")
     g.add_argument("--units", default=None, metavar="U",
                    help=f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m); "
                         "with --record, the record's units if its file does not say (g, m/s2, cm/s2, mm/s2)")

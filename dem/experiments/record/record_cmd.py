@@ -5,7 +5,7 @@ import argparse
 
 import numpy as np
 
-from analytic.motions.records import FORMATS, load_record
+from analytic.motions.records import FORMATS, MAX_RECORD_BYTES, MAX_RECORD_S, MAX_RECORD_SAMPLES, load_record
 from dem.common.options import print_json
 from specimens.constants import G
 
@@ -39,7 +39,8 @@ def _run(args: argparse.Namespace) -> int:
 def register(sub) -> None:
     p = sub.add_parser("record", help="read an accelerogram (AT2, SMC, ESM, CSV) and print its summary",
                        description="Read a recorded accelerogram and print name, npts, dt, duration, PGA and units.")
-    p.add_argument("file", help="record file")
+    p.add_argument("file", help=f"record file, up to {MAX_RECORD_BYTES // 2**20} MB, {MAX_RECORD_SAMPLES} samples "
+                                f"and {MAX_RECORD_S:g} s (a real record is far below; cut a longer one)")
     p.add_argument("--format", default="auto", choices=("auto",) + FORMATS, help="file format (default: detect)")
     p.add_argument("--units", default=None, choices=("g", "m/s2", "cm/s2", "mm/s2"),
                    help="units of the numbers in the file (needed for CSV without units in its header)")

@@ -61,6 +61,9 @@ LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module 
 
 #: Longest tail or run a protocol accepts [s]: 600 simulated seconds are hours of wall time.
 MAX_SIMULATED_S = 600.0
+#: Longest simulated time of one run [s]: the longest record a reader takes (MAX_RECORD_S, 1200 s) plus the
+#: longest tail; a motion built by hand (a SampledMotion of 10 million samples) is refused before the run.
+MAX_RUN_S = 1800.0
 #: A run that may simulate longer than this [s] says so before it starts (it can take minutes).
 ANNOUNCE_SIMULATED_S = 10.0
 
@@ -103,7 +106,14 @@ class ShakeProtocol:
                                     f"{self.collapse_fraction:g}, got {c!r}")
 
     def total_duration(self, motion: GroundMotion) -> float:
-        return float(self.duration) if self.duration is not None else float(motion.duration) + self.tail
+        """Simulated time of a run [s]; more than :data:`MAX_RUN_S` is refused."""
+        if self.duration is not None:
+            return float(self.duration)
+        total = float(motion.duration) + self.tail
+        if not total <= MAX_RUN_S:
+            raise ArchdemInputError(f"the run would simulate {total:g} s (motion and tail), more than {MAX_RUN_S:g} s; "
+                                    "cut the record or give --duration")
+        return total
 
 
 @dataclass

@@ -6,7 +6,8 @@ import argparse
 import math
 import sys
 
-from analytic.motions.records import ground_motion
+from analytic.motions.inputs import MIN_PEAK_ACCELERATION
+from analytic.motions.records import MAX_RECORD_BYTES, MAX_RECORD_S, MAX_RECORD_SAMPLES, ground_motion
 from dem.common.options import (
     add_arch_arguments,
     add_contact_law_arguments,
@@ -26,8 +27,9 @@ from dem.common.options import (
 from dem.core.model import from_assembly
 from dem.core.progress import terminal
 from dem.core.settings import dynamics_settings
-from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_SIMULATED_S, ShakeProtocol, shake
+from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_RUN_S, MAX_SIMULATED_S, ShakeProtocol, shake
 from specimens.blocks import discretise
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 from specimens.io import unique_run_path
 
@@ -63,9 +65,14 @@ def check_sine(args: argparse.Namespace) -> None:
     """``--sine`` and ``--amplitude`` within the bounds above."""
     if args.sine is not None and not (math.isfinite(args.sine) and MIN_SINE_HZ <= args.sine <= MAX_SINE_HZ):
         raise ArchdemInputError(f"--sine must be a frequency in [{MIN_SINE_HZ:g}, {MAX_SINE_HZ:g}] Hz, got {args.sine:g}")
-    a = getattr(args, "amplitude", None)
-    if a is not None and not (math.isfinite(a) and 0 < a <= MAX_AMPLITUDE_G):
-        raise ArchdemInputError(f"--amplitude must be in (0, {MAX_AMPLITUDE_G:g}] g, got {a:g}")
+    for name in ("amplitude", "a_min", "a_max"):
+        a = getattr(args, name, None)
+        opt = "--" + name.replace("_", "-")
+        if a is not None and not (math.isfinite(a) and 0 < a <= MAX_AMPLITUDE_G):
+            raise ArchdemInputError(f"{opt} must be in (0, {MAX_AMPLITUDE_G:g}] g, got {a:g}")
+        if a is not None and a * G < MIN_PEAK_ACCELERATION:
+            raise ArchdemInputError(f"{opt} {a:g} g is below {MIN_PEAK_ACCELERATION / G:g} g, an accelerometer's "
+                                    "resolution: it moves nothing")
 
 
 def _motion(args: argparse.Namespace):
@@ -138,12 +145,16 @@ def register(sub) -> None:
     add_shake_arguments(p)
     p.add_argument("--sine", type=float, default=None, metavar="FREQ",
                    help=f"one-cycle sine pulse of FREQ [Hz], up to {MAX_SINE_HZ:g}")
-    p.add_argument("--amplitude", type=float, default=None, metavar="A_G", help=f"sine amplitude [g], up to {MAX_AMPLITUDE_G:g}")
-    p.add_argument("--record", default=None, metavar="FILE", help="accelerogram (.AT2, .smc, ESM ASCII, CSV)")
+    p.add_argument("--amplitude", type=float, default=None, metavar="A_G",
+                   help=f"sine amplitude [g], from {MIN_PEAK_ACCELERATION / G:g} up to {MAX_AMPLITUDE_G:g}")
+    p.add_argument("--record", default=None, metavar="FILE",
+                   help=f"accelerogram (.AT2, .smc, ESM ASCII, CSV), up to {MAX_RECORD_BYTES // 2**20} MB, "
+                        f"{MAX_RECORD_SAMPLES} samples and {MAX_RECORD_S:g} s")
     p.add_argument("--scale", type=float, default=None, help="record scale factor")
     p.add_argument("--pga", type=float, default=None, metavar="A_G", help="scale the record to this PGA [g]")
     p.add_argument("--baseline", action="store_true", help="baseline-correct the record (linear velocity fit)")
-    p.add_argument("--duration", type=float, default=None, help="simulated time [s] (default: motion + tail)")
+    p.add_argument("--duration", type=float, default=None,
+                   help=f"simulated time [s], up to {MAX_SIMULATED_S:g} (default: motion + tail, up to {MAX_RUN_S:g})")
     p.add_argument("--full", action="store_true",
                    help="simulate the whole duration (default: stop at collapse, or once at rest after the motion)")
     p.add_argument("--out", default="runs/shake", help="directory for the run file (default runs/shake)")

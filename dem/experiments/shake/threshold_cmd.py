@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from analytic.motions.inputs import MIN_PEAK_ACCELERATION
 from dem.common.options import default_of, print_json, workers_option
 from dem.core.progress import terminal
 from dem.experiments.shake.run import ShakeProtocol
@@ -16,6 +17,7 @@ from dem.experiments.shake.shake_cmd import (
     model_and_settings,
 )
 from dem.experiments.shake.thresholds import SCAN_TOP, static_onset, threshold
+from specimens.constants import G
 from specimens.errors import ArchdemInputError
 
 
@@ -56,7 +58,7 @@ def register(sub) -> None:
                                    "the lowest collapsing bracket, and every survival band above it.")
     add_shake_arguments(q)
     q.add_argument("--sine", type=float, required=True, metavar="FREQ", help=f"sine frequency [Hz], up to {MAX_SINE_HZ:g}")
-    q.add_argument("--a-min", dest="a_min", type=float, default=None, help="scan start [g] (default: static lambda)")
+    q.add_argument("--a-min", dest="a_min", type=float, default=None, help=f"scan start [g], at least {MIN_PEAK_ACCELERATION / G:g} (default: static lambda)")
     q.add_argument("--a-max", dest="a_max", type=float, default=None, help=f"scan end [g] (default {SCAN_TOP:g} x start)")
     q.add_argument("--scan-ratio", dest="scan_ratio", type=float, default=default_of(threshold, "scan_ratio"),
                    help=f"scan step ratio (default {default_of(threshold, 'scan_ratio'):g})")

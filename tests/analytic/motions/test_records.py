@@ -367,3 +367,85 @@ def test_the_shipped_record_is_declared_package_data():
     for name in EXAMPLE_RECORDS:
         rel = example_record(name).relative_to(root / "analytic")
         assert any(rel.match(g) for g in globs), (rel, globs)
+
+
+# ------------------------------------------------------------------ bounded work (docs/decisions/010-input-rules.md)
+def _refused_quickly(path, match, **kw):
+    """The reader refuses ``path`` in one line, with under 1 s of CPU time."""
+    import time
+
+    t0 = time.process_time()
+    with pytest.raises(ArchdemInputError, match=match) as exc:
+        load_record(path, **kw)
+    assert time.process_time() - t0 < 1.0
+    assert "\n" not in str(exc.value)
+    return str(exc.value)
+
+
+def test_a_record_file_larger_than_the_byte_limit_is_refused_by_its_size(tmp_path):
+    from analytic.motions.records import MAX_RECORD_BYTES
+
+    # the probe's file: 10 million samples at 5 ms (~140 MB); a sparse file of that size stands for it
+    p = tmp_path / "ten-million.csv"
+    with open(p, "wb") as f:
+        f.write(b"time, acc [g]\n0,0.1\n0.005,0.2\n0.01,0.1\n")
+        f.truncate(10_000_000 * 14)
+    msg = _refused_quickly(p, "more than the 64 MB a record file may have")
+    assert "cut the record" in msg and MAX_RECORD_BYTES == 64 * 2**20
+
+
+def test_dev_zero_is_read_up_to_the_byte_limit_only(capsys):
+    import subprocess
+    import sys
+
+    if not Path("/dev/zero").exists():
+        pytest.skip("no /dev/zero")
+
+    def cap_memory():  # a reader without a limit fails here, not by filling the machine's memory
+        import resource
+
+        resource.setrlimit(resource.RLIMIT_AS, (4 * 2**30, 4 * 2**30))
+
+    r = subprocess.run([sys.executable, "-m", "dem.cli", "record", "/dev/zero"], capture_output=True, text=True,
+                       timeout=30, preexec_fn=cap_memory)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "64 MB" in r.stderr and r.stdout == ""
+    _refused_quickly("/dev/zero", "holds more than the 64 MB")
+
+
+def test_a_csv_record_above_the_sample_limit_is_refused_before_parsing(tmp_path):
+    from analytic.motions.records import MAX_RECORD_SAMPLES
+
+    p = tmp_path / "long.csv"
+    p.write_bytes(b"time, acc [g]\n" + b"0,0.1\n" * (MAX_RECORD_SAMPLES + 1))
+    _refused_quickly(p, f"{MAX_RECORD_SAMPLES + 1} samples, more than the {MAX_RECORD_SAMPLES} a record may hold")
+
+
+@pytest.mark.parametrize("npts, dt, words", [(2_000_000, 0.005, "samples, more than the 1000000"),
+                                             (200_000, 0.01, "lasts 1999.99 s, more than the 1200 s")])
+def test_a_header_declaring_too_many_samples_or_seconds_is_refused_at_the_header(tmp_path, npts, dt, words):
+    p = tmp_path / "long.AT2"
+    p.write_text("PEER NGA STRONG MOTION DATABASE RECORD\nEv, 1/1/2000, Sta, 90\n"
+                 f"ACCELERATION TIME SERIES IN UNITS OF G\nNPTS= {npts}, DT= {dt} SEC,\n  .1 .2 .3\n")
+    msg = _refused_quickly(p, words)
+    assert msg.startswith(f"{p}:4: ") and "cut the record" in msg
+
+
+def test_an_absurd_sample_is_refused_without_a_numpy_warning(tmp_path):
+    import warnings
+
+    p = tmp_path / "absurd.csv"
+    p.write_text("time, acc [g]\n0,0\n0.01,1e308\n0.02,0\n0.03,0.1\n")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _refused_quickly(p, "peak acceleration 1e\\+308 g is above 20 g")
+    assert caught == []
+
+
+def test_the_simulated_time_of_a_run_is_bounded():
+    from dem.experiments.shake.run import MAX_RUN_S, ShakeProtocol
+
+    m = SampledMotion(np.full(400_001, 0.1), 0.005)  # 2000 s built by hand, past the readers
+    with pytest.raises(ArchdemInputError, match=f"more than {MAX_RUN_S:g} s; cut the record or give --duration"):
+        ShakeProtocol().total_duration(m)
+    assert ShakeProtocol(duration=5.0).total_duration(m) == 5.0
+    assert ShakeProtocol(tail=1.0).total_duration(SampledMotion(np.full(1001, 0.1), 0.005)) == 6.0

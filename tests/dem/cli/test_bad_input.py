@@ -55,6 +55,8 @@ from dem.cli import main
     (["shake", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "1e30", "--sine", "4", "--amplitude", "0.3"], "between 0.001 and 1000 m"),
     (["shake", "Sh02-Sd020", "--sine", "1e9", "--amplitude", "0.3"], "--sine must be a frequency in [0.01, 100] Hz"),
     (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "1e300"], "--amplitude must be in (0, 100] g"),
+    (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "1e-9"], "--amplitude 1e-09 g is below 1e-06 g"),
+    (["threshold", "Sh02-Sd020", "--sine", "4", "--a-min", "1e-9"], "--a-min 1e-09 g is below 1e-06 g"),
     (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "0.3", "--tail", "1e9"], "between 0 and 600 s"),
     (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "0.3", "--plot", "p.xyz"], "--plot must end in"),
     (["threshold", "Sh02-Sd020", "--sine", "1e9"], "--sine must be a frequency"),
