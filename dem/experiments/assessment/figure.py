@@ -166,6 +166,20 @@ def _figures_table(d: dict) -> str:
     return "<table>" + "".join(f"<tr><td>{lab}</td><td>{d[k] * f:.4g}</td></tr>" for k, lab, f in keys) + "</table>"
 
 
+def strengthening_text(frp_out: dict) -> str:
+    """What strengthens the mechanism, in words: the strips (face, design strength, force per joint) and
+    the tie (height, yield force)."""
+    what = []
+    if frp_out.get("strips"):
+        st = frp_out["strips"]
+        what.append(f"FRP strips on the {st['face']}, f_fd {st['design_strength_MPa']:.4g} MPa ({st['governing']}), "
+                    f"{st['force_N'] / 1e3:.3g} kN per joint")
+    if frp_out.get("tie"):
+        t = frp_out["tie"]
+        what.append(f"a tie at {t['height_m']:g} m yielding at {t['yield_force_kN']:.4g} kN")
+    return "; ".join(what)
+
+
 def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, frp_out: dict | None = None) -> None:
     """One self-contained HTML page: site, mechanism, figures, checks, the verdict (never overwrites)."""
     chk = next((x for x in res.checks if x["kind"] == "non-linear"), None)
@@ -184,15 +198,7 @@ def write_report(path: str, label: str, site, mech, res, out: dict, frp=None, fr
              "quoted as a0*/PGA is the activation against the life-safety hazard, reported as a convention, not a "
              "code check.</p>"]
     if frp is not None and frp_out is not None:
-        what = []
-        if frp_out.get("strips"):
-            st = frp_out["strips"]
-            what.append(f"FRP strips on the {html.escape(st['face'])}, f_fd {st['design_strength_MPa']:.4g} MPa "
-                        f"({html.escape(st['governing'])}), {st['force_N'] / 1e3:.3g} kN per joint")
-        if frp_out.get("tie"):
-            t = frp_out["tie"]
-            what.append(f"a tie at {t['height_m']:g} m yielding at {t['yield_force_kN']:.4g} kN")
-        parts += [f"<h2>Strengthened: {'; '.join(what)}</h2>",
+        parts += [f"<h2>Strengthened: {html.escape(strengthening_text(frp_out))}</h2>",
                   "<p class='meta'>Hinges " + html.escape(hinges_text(frp_out["hinges"]))
                   + "; d0* from the curve of gravity alone (the strengthening is not shown to last until collapse). "
                     "The DEM does not model the strengthening.</p>",

@@ -334,22 +334,16 @@ def _summary_table(L: _Layout, d: dict) -> None:
             [[lab, "–" if d.get(k) is None else f"{d[k] * f:.4g}", u] for k, lab, u, f in keys], [30, 16, 14])
 
 
-def _strengthening(frp_out: dict) -> str:
-    what = []
-    if frp_out.get("strips"):
-        st = frp_out["strips"]
-        what.append(f"FRP strips on the {st['face']}, f_fd {st['design_strength_MPa']:.4g} MPa ({st['governing']}), "
-                    f"{st['force_N'] / 1e3:.3g} kN per joint")
-    if frp_out.get("tie"):
-        t = frp_out["tie"]
-        what.append(f"a tie at {t['height_m']:g} m yielding at {t['yield_force_kN']:.4g} kN")
-    return "; ".join(what)
-
-
 def _layout(label: str, site, mech, res, out: dict, frp, frp_out: dict | None, fields: list, inputs,
             extra=None) -> _Layout:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.experiments.assessment.figure import capacity_figure, hinges_text, mechanism_figure, spectra_figure
+    from dem.experiments.assessment.figure import (
+        capacity_figure,
+        hinges_text,
+        mechanism_figure,
+        spectra_figure,
+        strengthening_text,
+    )
 
     strengthened = frp is not None and frp_out is not None
     verdicts = [("Unreinforced", res.safety_index, res.verified, out["governing_check"])]
@@ -369,7 +363,7 @@ def _layout(label: str, site, mech, res, out: dict, frp, frp_out: dict | None, f
     L.heading("3.1 Calculation, step by step", 10)
     _steps_table(L, out["trail"])
     if strengthened:
-        L.heading(f"4. Strengthened: {_strengthening(frp_out)}")
+        L.heading(f"4. Strengthened: {strengthening_text(frp_out)}")
         L.paragraph(f"Hinges {hinges_text(frp_out['hinges'])}; d0* from the curve of gravity alone (the "
                     "strengthening is not shown to last until collapse). The DEM does not model the strengthening.")
         _summary_table(L, frp_out)
