@@ -30,6 +30,7 @@ from analytic.limit.limit_discrete import (
     solve_contact_lp,
 )
 from specimens.blocks import Assembly
+from specimens.constants import G
 
 #: Bounds the mixed-integer program puts on its unknowns, in units of the total weight (forces) and of
 #: the mechanism's scale (velocities: the mass-weighted horizontal velocity is 1). A solution that comes
@@ -124,7 +125,7 @@ def solve_contact_non_associative(model: ContactModel, load_sign: int = 1, lengt
         return _failed(math.nan, assoc, assoc.message, s)
     t0 = time.perf_counter()
     W = float(model.mass.sum())
-    n_max = max((f["N_intrados"] + f["N_extrados"]) / (9.81 * W) for f in assoc.forces.values()) if assoc.forces else 0.0
+    n_max = max((f["N_intrados"] + f["N_extrados"]) / (G * W) for f in assoc.forces.values()) if assoc.forces else 0.0
     lam_hi = assoc.lam if math.isfinite(assoc.lam) else math.inf
     # forces grow with the load: the bounds start from the associative state's scale
     fb = FORCE_BOUND * max(1.0, n_max, lam_hi if math.isfinite(lam_hi) else 1.0)
@@ -157,7 +158,7 @@ class _Index:
         self.V = 2 * nj + np.arange(2 * nj)
         self.lam = 4 * nj
         self.u = self.lam + 1 + np.arange(3 * nb)  # (u_x, u_y, omega) per body
-        self.d = self.u[-1] + 1 + np.arange(2 * nj) if nb else self.lam + 1 + np.arange(2 * nj)  # openings
+        self.d = self.lam + 1 + 3 * nb + np.arange(2 * nj)  # openings
         self.sp = self.d[-1] + 1 + np.arange(nj)  # forward slip
         self.sm = self.sp[-1] + 1 + np.arange(nj)  # backward slip
         self.z = self.sm[-1] + 1 + np.arange(2 * nj)  # 1: the end may open (and carries no force)
@@ -189,8 +190,9 @@ def _mip(model: ContactModel, s: int, L: float, fb: float, vb: float, lam_hi: fl
     ix = _Index(nb, nj, fr)
     W = float(model.mass.sum())
     eq, rhs = equilibrium_entries(model, L, s)
-    rows: list[tuple[dict[int, float], float, float]] = [
-        ({c: v for (r, c), v in eq.items() if r == i}, rhs[i], rhs[i]) for i in range(3 * nb)]
+    rows: list[tuple[dict[int, float], float, float]] = [({}, rhs[i], rhs[i]) for i in range(3 * nb)]
+    for (r, c), v in eq.items():  # the equilibrium rows, grouped in one pass
+        rows[r][0][c] = v
     for j in range(nj):
         n = model.normal[j]
         t = np.array([-n[1], n[0]])
@@ -302,7 +304,7 @@ def _result(model, s, L, x, res, ix, assoc, fb, vb, seconds) -> NonAssociativeRe
     u = x[ix.u].reshape(-1, 3)
     vmax = max(1e-300, float(np.abs(u).max()))
     tol = 1e-5 * vmax
-    F = 9.81 * W
+    F = G * W
     states: dict[str, str] = {}
     faces: dict[str, str] = {}
     forces: dict[str, dict[str, float]] = {}
