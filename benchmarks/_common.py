@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from specimens.io import atomic_path, unique_run_path
+from foundation.io import atomic_path, unique_run_path
 
 
 def report(name: str, res: dict, digits: int = 3) -> Path:

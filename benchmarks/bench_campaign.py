@@ -24,7 +24,7 @@ def main() -> None:
     from dem.common.campaign import CampaignContext
     from dem.core.provenance import provenance
     from specimens.catalogue import select_specimens
-    from specimens.io import atomic_path
+    from foundation.io import atomic_path
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="the quick campaign of make demo")

@@ -117,7 +117,7 @@ def main() -> None:
     from dem.core.provenance import engine_version
     from dem.core.settings import Settings
     from specimens.catalogue import select_specimens
-    from specimens.io import atomic_path
+    from foundation.io import atomic_path
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeats", type=int, default=3)

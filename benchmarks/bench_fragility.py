@@ -28,7 +28,7 @@ from _common import report
 def _study(a, n: int, path: Path, workers: int | None = None, scheduler: str | None = None):
     from dem.experiments.fragility.run import DEFAULT_EDGE_LOSS_SD, Perturbation, arch_structure, fragility, sine_spec
     from specimens.catalogue import get_specimen
-    from specimens.io import parse_grid
+    from foundation.io import parse_grid
 
     amps = parse_grid(a.amplitudes)
     groups = [(f"{a.freq:g} Hz", "g", [(x, sine_spec(a.freq, x)) for x in amps])]
@@ -43,7 +43,7 @@ def _engine_share(a) -> dict:
     """cProfile of one run (the middle amplitude): time inside the engine's step over the run's."""
     from dem.experiments.fragility.run import Perturbation, arch_structure, shake_case, sine_spec
     from specimens.catalogue import get_specimen
-    from specimens.io import parse_grid
+    from foundation.io import parse_grid
 
     amps = parse_grid(a.amplitudes)
     case = {"label": a.id, "structure": arch_structure(get_specimen(a.id).arch), "settings": {"engine": a.engine},

@@ -24,7 +24,7 @@ def main() -> None:
     from dem.experiments.tilt.check import reference_lp
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
-    from specimens.io import atomic_path
+    from foundation.io import atomic_path
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--id", default="Sh1-Sd025")

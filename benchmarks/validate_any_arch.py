@@ -34,7 +34,7 @@ def one(job: tuple[str, str, str]) -> dict:
     from dem.experiments.tilt.check import lp_check, lp_slides, na_joints, reference_lp, same_mechanism
     from dem.experiments.tilt.run import tilt
     from specimens.arch_set import set_arch
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     m = set_arch(name)
     asm = m.assembly(folder)
@@ -100,7 +100,7 @@ def table(rows: list[dict]) -> str:
 
 def main(argv=None) -> int:
     from specimens.arch_set import ARCH_SET
-    from specimens.processes import pool_worker_init
+    from foundation.processes import pool_worker_init
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--arches", default="", help="comma-separated members (default: all)")

@@ -72,7 +72,7 @@ def main() -> None:
     ap.add_argument("--workers", type=int, default=2)
     a = ap.parse_args()
     from dem.experiments.tilt.step_piers import PIER_HEIGHTS_FULL
-    from specimens.processes import die_with_parent
+    from foundation.processes import die_with_parent
 
     engines = a.engines.split(",")
     with ProcessPoolExecutor(a.workers, initializer=die_with_parent) as ex:

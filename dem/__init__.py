@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from specimens.lazy import lazy_exports
+from foundation.lazy import lazy_exports
 
 # ruff: noqa: F401 (the names below are re-exported lazily)
 

@@ -7,7 +7,7 @@ from specimens.catalogue import (
     full_scale_set,
     get_specimen,
 )
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.exchange import read_assembly, write_assembly
 from specimens.geometry import PointedArch
 from specimens.piers import Piers

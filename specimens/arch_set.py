@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from specimens.blocks import Assembly, discretise
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import signed_area
 

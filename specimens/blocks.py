@@ -32,7 +32,7 @@ from typing import Literal, Mapping
 import numpy as np
 
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 from specimens.sections import (

@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Polygon
 
 from specimens.blocks import Assembly
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 #: ``gid`` of the joint labels and of the box of the drawing's data, so a test can find them.
 JOINT_LABEL_GID = "joint-label"

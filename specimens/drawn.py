@@ -36,7 +36,7 @@ from specimens.blocks import (
     joint_normal,
 )
 from specimens.constants import DRAWN_DENSITY
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.sections import is_convex, polygon_properties, signed_area
 
 #: Default contact tolerance, as a fraction of the drawing's largest extent.

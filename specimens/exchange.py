@@ -29,8 +29,8 @@ import numpy as np
 from specimens.blocks import Assembly
 from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M
 from specimens.drawn import MAX_BLOCKS, DrawnAssembly, DrawnBlock, _merge, _point_in, _self_intersects, assemble
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path
 from specimens.sections import polygon_properties, signed_area
 
 #: Length units a drawing may be in, and their size in metres.

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from specimens.blocks import DEFAULT_DENSITY, Body, Joint, _make_body
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.sections import polygon_properties
 
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.sections import (
     Arc,
     Edge,

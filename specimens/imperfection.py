@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from specimens.blocks import Assembly, check_contact, discretise
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 #: Least contact a realised joint keeps (fraction of its depth); larger drawn losses are scaled down to it.

@@ -13,8 +13,8 @@ import numpy as np
 import trimesh
 
 from specimens.blocks import Assembly, Body
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path
 from specimens.sections import is_convex
 
 MeshFormat = Literal["stl", "obj", "glb"]

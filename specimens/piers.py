@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Most courses per pier (each course adds a body and a joint to every analysis).
 MAX_COURSES = 50

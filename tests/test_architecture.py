@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-LAYERS = ("specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
+LAYERS = ("foundation", "specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
 MAX_COMMENT_BLOCK = 8  # lines; longer explanations belong in docs/
 # the floors of analytic and dem, lowest first: a module imports its own sub-package or an earlier one
 # (docs/architecture.md); the package tops, with their docstrings and public names, sit above their floors

@@ -23,7 +23,7 @@ from analytic.codes.kinematic import (
 )
 from analytic.motions.spectra import ec8
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 LIMIT_STATES = ("SLD", "SLV", "SLC")
 

@@ -25,7 +25,7 @@ from scipy.optimize import minimize
 from scipy.special import log_ndtr
 from scipy.stats import binomtest, norm
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Confidence level of the stripes' binomial intervals and of the bootstrap intervals.
 CONFIDENCE = 0.95

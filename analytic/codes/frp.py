@@ -22,7 +22,7 @@ import numpy as np
 
 from analytic.limit import ties
 from specimens.blocks import DEFAULT_DENSITY, discretise
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Partial factor on the strips' rupture strength, per application type (A: certified system, B: other).
 GAMMA_F = {"A": 1.10, "B": 1.25}

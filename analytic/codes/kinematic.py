@@ -32,7 +32,7 @@ import numpy as np
 
 from analytic.motions.spectra import TabulatedSpectrum, floor_spectrum, rebuild
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Behaviour factor of the linear kinematic check of unreinforced masonry mechanisms.
 Q_MASONRY = 2.0

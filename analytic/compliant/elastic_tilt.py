@@ -26,7 +26,7 @@ from scipy.optimize import minimize
 
 from analytic.compliant.modes import joint_frames, stiffness_per_area
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Shear over normal stiffness standing for the engines' friction, rigid until it slips (lambda is the same to
 #: 1e-4 from 1 to 1e4; far above, the energy's round-off hides the minimum).

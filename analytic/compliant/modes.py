@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Where a joint's springs sit, as points and weights on [0, 1]: a continuous bed (two Gauss points, exact
 #: for its quadratic integrand), or lumped at the contact's two ends as the DEM engines' corner contacts are.

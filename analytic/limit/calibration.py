@@ -29,7 +29,7 @@ import numpy as np
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, SPECIMEN_WIDTH
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.imperfection import Imperfection
 

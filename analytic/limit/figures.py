@@ -19,7 +19,7 @@ from analytic.limit.limit_discrete import enumerate_mechanisms
 from analytic.limit.summary import multiplier_series
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, full_scale_set
-from specimens.io import atomic_path, unique_run_path
+from foundation.io import atomic_path, unique_run_path
 
 
 def _save(fig, out_dir: Path, stem: str) -> Path:

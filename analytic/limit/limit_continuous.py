@@ -39,7 +39,7 @@ import numpy as np
 from analytic.limit.layout import FourHingeLayout, Hinge, MacroBlock, continuous_layout
 from analytic.limit.limit_discrete import four_hinge_lambda
 from specimens.blocks import band_points, central_band, check_contact
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import Arc, Segment, region_properties
 

@@ -35,7 +35,7 @@ from scipy.sparse import csr_array
 from analytic.limit.layout import FourHingeLayout, Hinge, MacroBlock
 from specimens.blocks import Assembly
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 FACES = ("intrados", "extrados")
 

@@ -6,7 +6,7 @@ import warnings
 from concurrent.futures import ProcessPoolExecutor
 
 from specimens.blocks import discretise
-from specimens.processes import die_with_parent
+from foundation.processes import die_with_parent
 
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Accepted ranges: cross-section area [m^2], yield strength [Pa].
 AREA_MAX, FY_MAX = 0.1, 2000e6

@@ -30,7 +30,7 @@ import numpy as np
 
 from analytic.limit.limit_continuous import continuous_collapse
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch, ring_half_boundary
 from specimens.sections import mirror_edges, region_properties
 

@@ -23,7 +23,7 @@ with warnings.catch_warnings():
     import pyrotd
 
 from analytic.motions.inputs import SampledMotion
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Periods sampled (log-spaced) over the matching range.
 MATCH_PERIODS = 40

@@ -36,7 +36,7 @@ from numpy.polynomial import Polynomial
 
 from analytic.motions.inputs import MIN_PEAK_ACCELERATION, GroundMotion, SampledMotion, SinePulse
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 FORMATS = ("at2", "smc", "esm", "csv")
 

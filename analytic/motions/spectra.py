@@ -27,7 +27,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: NTC 2018 Tab. 3.2.IV: soil category -> (S_S(F0 ag/g) as (a, b, lo, hi): clip(a - b F0 ag/g, lo, hi), C_C as (c, p): c Tc*^p).
 NTC_SOIL = {

@@ -22,8 +22,8 @@ from analytic.motions.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.rocking.mechanism import Mechanism
 from analytic.search import midpoint, search
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
-from specimens.processes import die_with_parent
+from foundation.errors import ArchdemInputError
+from foundation.processes import die_with_parent
 
 INPUTS = ("sine", "sine0", "A", "B")
 

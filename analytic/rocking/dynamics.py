@@ -30,7 +30,7 @@ from scipy.optimize import brentq
 from analytic.motions.inputs import GroundMotion, PulseA, PulseB, SinePulse
 from analytic.rocking.impact import ImpactTransition, post_impact
 from analytic.rocking.mechanism import Mechanism
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 RTOL = 1e-10
 ATOL = 1e-12

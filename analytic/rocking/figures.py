@@ -9,7 +9,7 @@ from matplotlib.figure import Figure
 from analytic.rocking.domain import FailureDomain
 from analytic.rocking.dynamics import Response
 from specimens.constants import G
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 
 def _save(fig, path: str | Path, overwrite: bool = False) -> Path:

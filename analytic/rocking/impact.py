@@ -26,7 +26,7 @@ import math
 from dataclasses import dataclass
 
 from analytic.rocking.mechanism import Mechanism, RigidField
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _pair(a: RigidField, b: RigidField, moments: tuple[float, float, float, float]) -> float:

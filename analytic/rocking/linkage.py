@@ -38,7 +38,7 @@ from analytic.limit.two_bar import two_bar_geometry
 from analytic.rocking.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
 from specimens.blocks import Assembly, discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import region_properties
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 
 from analytic.rocking.mechanism import BodyState, Mechanism, RigidField, field_of, rotating_body
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @dataclass(frozen=True)

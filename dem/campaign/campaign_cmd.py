@@ -21,7 +21,7 @@ from dem.common.options import (
 )
 from dem.core.engines import available_engines
 from specimens.catalogue import select_specimens
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _campaign(args: argparse.Namespace) -> int:

@@ -18,7 +18,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from specimens.io import atomic_path, to_json
+from foundation.io import atomic_path, to_json
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}

@@ -28,8 +28,8 @@ from dem.experiments.tilt.step_lab import step_lab
 from dem.experiments.assessment.step_drawing import step_drawing
 from dem.experiments.tilt.step_piers import step_piers
 from dem.experiments.tilt.step_tilt import step_tilt
-from specimens.errors import ArchdemInputError
-from specimens.io import exclusive
+from foundation.errors import ArchdemInputError
+from foundation.io import exclusive
 
 StepFunc = Callable[[CampaignContext, Path], dict]
 

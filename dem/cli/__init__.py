@@ -3,7 +3,7 @@
 Each sub-command lives in a module named after it, beside its experiment (``dem/experiments/NAME/``)
 or here for the commands that are no experiment, and exposes ``register(subparsers)``; the module adds its parser and sets ``func`` (a
 callable taking the parsed namespace and returning an exit code).
-Bad input raises :class:`specimens.errors.ArchdemInputError`, which becomes one
+Bad input raises :class:`foundation.errors.ArchdemInputError`, which becomes one
 line on stderr and exit code 2.
 """
 from __future__ import annotations
@@ -25,7 +25,7 @@ from dem.experiments.modes import modes_cmd
 from dem.experiments.record import record_cmd
 from dem.experiments.shake import animate_cmd, domain_cmd, shake_cmd, threshold_cmd
 from dem.experiments.tilt import calibrate_cmd, tilt_cmd
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 # The sub-command modules, in the order they appear in ``archdem --help``; each lives with its
 # experiment (docs/architecture.md).

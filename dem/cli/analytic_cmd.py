@@ -20,7 +20,7 @@ from dem.common.options import (
 from specimens.blocks import discretise
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.drawn import DrawnAssembly, gaps_text
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 #: The choices of ``--friction``: the associative LP alone, or the non-associative collapse beside it.

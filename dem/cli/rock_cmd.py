@@ -10,7 +10,7 @@ from analytic.rocking.domain import make_input
 from dem.common.options import figure_file, option_used, print_json
 from dem.experiments.shake.domain_cmd import add_linkage_arguments, build_mechanism, restitution_option
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _run_rock(args: argparse.Namespace) -> int:

@@ -8,7 +8,7 @@ from typing import Callable
 
 from dem.common.joints import contact_fraction, joint_law, joint_law_text
 from dem.core.settings import DYNAMICS_ENGINE, Settings, dynamics_settings
-from specimens.io import atomic_path, to_json
+from foundation.io import atomic_path, to_json
 
 
 @dataclass

@@ -9,7 +9,7 @@ import numpy as np
 from dem.core.detect import JointState
 from dem.core.model import BaseSpec, BodySpec, JointSpec, Model
 from dem.core.simulate import History, SimResult
-from specimens.io import to_json
+from foundation.io import to_json
 
 
 def write_model(g: h5py.Group, m: Model) -> None:

@@ -13,7 +13,7 @@ from analytic.limit.calibration import load_calibration
 from dem.core.contact import study_joints
 from dem.core.settings import Settings
 from specimens.blocks import check_contact
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.imperfection import Imperfection
 

@@ -18,11 +18,11 @@ from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, 
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M, MIN_LENGTH_M  # lengths an option takes [m]
 from specimens.drawn import DRAWN_CONFIG, MAX_BLOCKS, DrawnAssembly, gaps_text
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.exchange import UNITS, read_assembly
 from specimens.geometry import PointedArch
-from specimens.io import can_make_dir, check_name, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
-from specimens.io import parse_grid as _parse_grid
+from foundation.io import can_make_dir, check_name, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from foundation.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
 #: Densities the commands take [kg/m^3].
@@ -448,7 +448,7 @@ def add_dynamics_dt_argument(p: argparse.ArgumentParser, prefix: str = "") -> No
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:
-    """A grid option: :func:`specimens.io.parse_grid` (one parser for every command)."""
+    """A grid option: :func:`foundation.io.parse_grid` (one parser for every command)."""
     return _parse_grid(text, what)
 
 

@@ -16,7 +16,7 @@ import numpy as np
 from dem.core.model import Model
 from dem.core.settings import Settings
 from specimens.catalogue import STUDY_JOINTS
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Contact points of a flat face-to-face joint in both engines: the four corners of the face.
 POINTS_PER_JOINT = 4

@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 from types import ModuleType
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 EXTRAS = {"mujoco": "mujoco", "distributed": "cluster", "compas_lmgc90": "lmgc90"}  # importable module -> archdem extra
 

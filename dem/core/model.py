@@ -21,7 +21,7 @@ import numpy as np
 
 from specimens.blocks import Assembly, discretise
 from specimens.catalogue import Specimen, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 

@@ -11,7 +11,7 @@ import math
 from dataclasses import asdict, dataclass, fields, replace
 
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Friction coefficients a simulation takes: below 0.01 (ice on ice) a block slides at any tilt,
 #: and 10 already prevents any sliding of the catalogue.

@@ -19,7 +19,7 @@ from dem.core.engines.inputs import accel
 from dem.core.loads import Load
 from dem.core.model import Model
 from dem.core.settings import Settings
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @dataclass

@@ -75,9 +75,9 @@ import numpy as np
 from dem.core.extras import require
 from dem.core.progress import Progress, TerminalLine, terminal
 from dem.core.provenance import provenance
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path, exclusive, json_default, writable_dir
-from specimens.processes import die_with_parent, pool_worker_init
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, exclusive, json_default, writable_dir
+from foundation.processes import die_with_parent, pool_worker_init
 
 LAYOUT_VERSION = 1
 

@@ -14,7 +14,7 @@ from analytic.limit.limit_discrete import enumerate_mechanisms, solve_lp
 from analytic.rocking.linkage import minimised_four_bar
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("sid", ["Sh02-Sd020", "Sh06-Sd010", "Sh1-Sd025"])

@@ -7,7 +7,7 @@ import pytest
 from analytic.limit.limit_discrete import solve_lp
 from specimens.arch_set import ARCH_SET, set_arch
 from specimens.drawn import DrawnAssembly
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_the_set_spans_what_users_bring():

@@ -5,7 +5,7 @@ import pytest
 
 from specimens.blocks import discretise, joint_angles
 from specimens.catalogue import CATALOGUE, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.sections import is_convex, signed_area
 

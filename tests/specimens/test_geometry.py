@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from specimens.catalogue import _TABLE, CATALOGUE, full_scale_set, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 # Sh, Sd of the spec's table (01 §1.3), an independent statement of the rows

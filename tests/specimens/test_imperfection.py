@@ -6,7 +6,7 @@ import pytest
 
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.imperfection import MIN_CONTACT, Imperfection, realise
 
 ARCH = get_specimen("Sh06-Sd020").arch  # t = 64 mm

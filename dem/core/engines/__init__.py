@@ -5,7 +5,7 @@ import importlib
 
 from dem.core.engines.base import Engine
 from dem.core.extras import require
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 _ENGINES = {"pybullet": ("dem.core.engines.pybullet_engine", "PyBulletEngine"), "mujoco": ("dem.core.engines.mujoco_engine", "MuJoCoEngine"),
             "lmgc90": ("dem.core.engines.lmgc90_engine", "LMGC90Engine")}

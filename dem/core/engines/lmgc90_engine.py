@@ -45,7 +45,7 @@ from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
 from dem.core.model import Model
 from dem.core.settings import Settings
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: archdem (x, y up, z out of plane) -> LMGC90 (x, y, z up): a proper rotation, x_lmgc = M x_arch.
 M = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])

@@ -31,8 +31,8 @@ from dem.common.options import (
 )
 from dem.core.settings import dynamics_settings
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
-from specimens.io import writable_file
+from foundation.errors import ArchdemInputError
+from foundation.io import writable_file
 
 CODES = ("ntc2018", "ec8")
 

@@ -12,7 +12,7 @@ from matplotlib.figure import Figure
 from analytic.codes.assessment import check_rows, index_text, quantity_text, site_table
 from analytic.motions.spectra import rebuild
 from specimens.constants import G
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 _CSS = ("body{font-family:system-ui,sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;color:#222}"
         "h1{border-bottom:2px solid #8a6d3b}table{border-collapse:collapse;font-size:13px;margin:0.8em 0}"

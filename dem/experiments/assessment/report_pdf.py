@@ -12,7 +12,7 @@ import textwrap
 from dataclasses import dataclass, field
 
 from specimens.constants import G
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 #: A4 portrait [in], its margins [in], and the fonts' sizes [pt].
 PAGE_W, PAGE_H, MARGIN = 8.27, 11.69, 0.7

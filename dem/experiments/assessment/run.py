@@ -23,7 +23,7 @@ from dem.experiments.record.run import RecordRun, dem_verdict, run_records
 from specimens.blocks import DEFAULT_DENSITY, Assembly, discretise
 from specimens.catalogue import Specimen, get_specimen
 from specimens.drawn import DrawnAssembly
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.monuments import MONUMENTS, Monument
 

@@ -10,7 +10,7 @@ from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.compare_engines.run import FRICTIONS, compare, summary
 from specimens.catalogue import select_specimens
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -30,8 +30,8 @@ from dem.experiments.compare_engines.shake import (
     study_cases,
 )
 from specimens.catalogue import select_specimens
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path
 
 
 def _listed(values) -> str:

@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 
 def plot_engine_comparison(rows, axes=None):

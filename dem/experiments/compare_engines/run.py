@@ -22,8 +22,8 @@ from dem.experiments.tilt.run import tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-from specimens.errors import ArchdemInputError
-from specimens.processes import die_with_parent
+from foundation.errors import ArchdemInputError
+from foundation.processes import die_with_parent
 
 #: Friction cases (joint, base): no sliding; the reference frictions; the joints' own on a base that does not slide.
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE),

@@ -29,7 +29,7 @@ from dem.experiments.compare_engines.run import FRICTIONS
 from dem.experiments.shake.thresholds import static_onset, threshold
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 STUDY_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # [Hz], the shake-table tests' range
 #: The specimens the laboratory shook: Sd 0.15 and 0.20.

@@ -4,7 +4,7 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 
 def write_tables(res, study_path) -> Path:

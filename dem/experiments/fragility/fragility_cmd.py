@@ -49,7 +49,7 @@ from dem.experiments.shake.shake_cmd import MAX_AMPLITUDE_G, MAX_SINE_HZ, MIN_SI
 from dem.experiments.shake.thresholds import threshold
 from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _structure(args: argparse.Namespace):

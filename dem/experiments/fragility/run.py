@@ -31,7 +31,7 @@ from dem.experiments.shake.run import ShakeProtocol, shake
 from dem.experiments.tilt.case import arch_from_params, arch_params
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.drawn import from_dict as drawn_from_dict
 from specimens.imperfection import Imperfection, realise_drawn
 from specimens.piers import Piers

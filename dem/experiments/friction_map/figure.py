@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from specimens.constants import REFERENCE_MU_JOINT
-from specimens.io import writable_dir
+from foundation.io import writable_dir
 
 MODE_COLOURS = {"rocking": "tab:green", "sliding": "tab:blue", "mixed": "tab:purple", "none": "0.6",
                 "failed": "tab:red"}

@@ -27,7 +27,7 @@ from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
 from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
 from dem.experiments.tilt.case import MAP_TILT_TOL
 from specimens.catalogue import FULL_SCALE_SPANS, Specimen, full_scale_set, select_specimens
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _specimens(args: argparse.Namespace) -> list:

@@ -71,9 +71,9 @@ from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import REFERENCE_MU_BASE
 from specimens.drawn import DrawnAssembly
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
-from specimens.io import parse_grid
+from foundation.io import parse_grid
 
 SLIDING_MODES = ("sliding", "mixed")
 ROCKING_MODES = ("rocking",)
@@ -85,7 +85,7 @@ STUDY_KIND = "friction_map"
 # ----------------------------------------------------------------------------- parameters
 def parse_mu_grid(text: str) -> list[float]:
     """``"start:stop:step"`` (stop included) or ``"a,b,c"`` -> sorted friction values
-    (:func:`specimens.io.parse_grid`)."""
+    (:func:`foundation.io.parse_grid`)."""
     return check_mus(parse_grid(str(text).strip(), "friction grid"))
 
 

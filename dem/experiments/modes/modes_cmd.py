@@ -21,7 +21,7 @@ from dem.core.model import from_assembly
 from dem.core.model import single_block as block_model
 from dem.core.settings import Settings
 from specimens.blocks import DEFAULT_DENSITY, discretise
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: Most modes a command prints or stores.
 MAX_COUNT = 10_000

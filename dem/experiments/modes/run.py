@@ -20,7 +20,7 @@ from dem.core.loads import Load
 from dem.core.model import Model
 from dem.core.settings import Settings
 from dem.core.simulate import simulate
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @dataclass(frozen=True)

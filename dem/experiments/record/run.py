@@ -16,7 +16,7 @@ import numpy as np
 
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, shake
-from specimens.processes import pool_worker_init
+from foundation.processes import pool_worker_init
 
 
 @dataclass(frozen=True)

@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path, can_make_dir
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, can_make_dir
 
 
 def read_run(path: str | Path) -> dict:

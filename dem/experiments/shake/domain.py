@@ -11,7 +11,7 @@ from dem.core.progress import Progress
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake import thresholds
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "glued", mu_joint: float | None = None,

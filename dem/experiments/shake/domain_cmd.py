@@ -33,8 +33,8 @@ from dem.experiments.shake.step_shake import SHAKE_FREQS
 from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-from specimens.errors import ArchdemInputError
-from specimens.io import MAX_GRID_POINTS
+from foundation.errors import ArchdemInputError
+from foundation.io import MAX_GRID_POINTS
 
 # Default grids of ``archdem domain`` (the analytic failure_domain takes its grid from the caller)
 SINE_FREQS = "1:20:0.5"  # Hz

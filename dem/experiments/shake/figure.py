@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 from dem.experiments.shake.run import motion_trace
 from specimens.constants import G
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 
 def _save(fig, path: str | Path, overwrite: bool = False) -> Path:

@@ -10,8 +10,8 @@ import h5py
 from dem.common.hdf5 import read_model, read_sim, write_model, write_sim
 from dem.core.settings import Settings
 from dem.experiments.shake.run import FORMAT, ShakeResult, motion_trace
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path, to_json
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, to_json
 
 
 def save_shake(result: ShakeResult, path) -> "Path":

@@ -53,7 +53,7 @@ from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings, dynamics_settings
 from dem.core.simulate import SimResult, simulate
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 FORMAT = "archdem-shake-1"
 LOADS = ("inertial", "driven-base")  # how the ground motion is applied (module docstring)

@@ -30,8 +30,8 @@ from dem.core.settings import dynamics_settings
 from dem.experiments.shake.run import ANNOUNCE_SIMULATED_S, MAX_RUN_S, MAX_SIMULATED_S, ShakeProtocol, shake
 from specimens.blocks import discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
-from specimens.io import unique_run_path
+from foundation.errors import ArchdemInputError
+from foundation.io import unique_run_path
 
 
 def _positive(name: str, v: float | None) -> None:

@@ -18,7 +18,7 @@ from dem.experiments.shake.shake_cmd import (
 )
 from dem.experiments.shake.thresholds import SCAN_TOP, static_onset, threshold
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _run_threshold(args: argparse.Namespace) -> int:

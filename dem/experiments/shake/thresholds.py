@@ -41,7 +41,7 @@ from dem.core.progress import Progress
 from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake.run import ShakeProtocol, collapses
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
 

@@ -5,8 +5,8 @@ import argparse
 
 from analytic.limit.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, read_experiments
 from dem.common.options import print_json, writable_file
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path, to_json
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, to_json
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -21,7 +21,7 @@ from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, TiltResult, hold_level, tilt, time_scale_of
 from specimens.blocks import check_contact, discretise
 from specimens.drawn import DrawnAssembly, from_dict
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 

@@ -20,7 +20,7 @@ import numpy as np
 from dem.experiments.tilt.case import DEM_CASE, make_case
 from dem.studies.sweep import case_key, run_studies
 from specimens.blocks import discretise
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 #: The tilt protocol of every realisation (the campaign's tilt test: LP start, 0.5 %).
 ENSEMBLE_PROTOCOL = {"kind": "hold", "tol": 0.005, "start": "lp"}

@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from specimens.io import atomic_path
+from foundation.io import atomic_path
 
 STATE_COLOURS = {"closed": "0.6", "hinge": "tab:red", "slide": "tab:blue", "hinge+slide": "tab:purple", "open": "tab:orange"}
 

@@ -21,8 +21,8 @@ from dem.core.detect import JointState
 from dem.core.settings import Settings
 from dem.experiments.tilt.check import HINGE_STATES, LpCheck
 from dem.experiments.tilt.run import TiltProtocol, TiltResult
-from specimens.errors import ArchdemInputError
-from specimens.io import atomic_path, to_json
+from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, to_json
 
 FORMAT = "archdem-tilt-1"
 FORMER_GUESS_BRACKET = (0.95, 1.01)  # the first bracket of files written before TiltProtocol.guess_bracket

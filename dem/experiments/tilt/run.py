@@ -38,7 +38,7 @@ from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
 from dem.experiments.tilt.check import LpCheck, lp_check, prevents_sliding
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 # First bracket of the hold protocol, relative to its first estimate: the widest that reaches the

@@ -27,8 +27,8 @@ from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, tilt
 from specimens.blocks import discretise
-from specimens.errors import ArchdemInputError
-from specimens.io import unique_run_path
+from foundation.errors import ArchdemInputError
+from foundation.io import unique_run_path
 
 
 def _run(args: argparse.Namespace) -> int:

@@ -9,7 +9,7 @@ from analytic.codes.frp import strengthened_collapse
 from analytic.motions.spectra import ec8
 from analytic.rocking.rocking_block import RockingBlock
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.monuments import NOH_GUMBAD
 
 FC = 1.35

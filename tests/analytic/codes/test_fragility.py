@@ -5,7 +5,7 @@ import pytest
 from scipy.stats import binomtest, norm
 
 from analytic.codes.fragility import _nll, fit_lognormal, stripes
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_stripes_group_runs_with_exact_intervals():

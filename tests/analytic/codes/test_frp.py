@@ -8,7 +8,7 @@ from analytic.codes.frp import BondFactors, Masonry, Strips, masonry_type, stren
 from analytic.rocking.linkage import RigidRotation, minimised_four_bar
 from specimens import get_specimen
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.piers import Piers
 
 

@@ -10,7 +10,7 @@ from analytic.rocking.linkage import mechanism_four_bar, minimised_four_bar
 from analytic.rocking.rocking_block import RockingBlock
 from specimens import get_specimen
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.frame import rocking_frame
 
 

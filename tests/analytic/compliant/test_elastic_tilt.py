@@ -9,7 +9,7 @@ from analytic.limit.limit_discrete import solve_lp
 from specimens import get_specimen
 from specimens.blocks import discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.frame import single_block
 
 B, H, W, RHO = 0.05, 0.2, 0.1, 500.0

@@ -8,7 +8,7 @@ from analytic.compliant.modes import mass_matrix, modes
 from specimens import get_specimen
 from specimens.blocks import discretise
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.frame import single_block
 
 B, H, W, RHO, KN = 0.05, 0.2, 0.1, 500.0, 4.34e8

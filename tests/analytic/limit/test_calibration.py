@@ -16,7 +16,7 @@ from analytic.limit.calibration import (
     read_experiments,
 )
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 IDS = ("Sh02-Sd020", "Sh06-Sd010", "Sh1-Sd015")
 

@@ -10,7 +10,7 @@ from analytic.limit.limit_continuous import RingCuts, continuous_collapse, lambd
 from analytic.limit.limit_discrete import enumerate_mechanisms
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch, ring_segment_properties
 from specimens.sections import region_properties
 

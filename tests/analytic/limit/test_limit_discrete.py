@@ -13,7 +13,7 @@ from analytic.limit.limit_discrete import (
 )
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 CASES = [(s.id, cfg) for s in CATALOGUE for cfg in ("free", "glued")]
 

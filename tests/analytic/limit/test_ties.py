@@ -12,7 +12,7 @@ from analytic.limit.limit_discrete import solve_lp
 from analytic.limit.ties import Tie, tie_link
 from specimens import get_specimen
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.frame import rocking_frame
 from specimens.monuments import NOH_GUMBAD
 from specimens.piers import Piers

@@ -5,7 +5,7 @@ import pytest
 from analytic.limit.limit_continuous import continuous_collapse
 from analytic.limit.two_bar import lambda_slide, lambda_two_bar, mu_star, two_bar_geometry
 from specimens.catalogue import CATALOGUE, get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import ring_half_boundary
 from specimens.sections import region_properties
 

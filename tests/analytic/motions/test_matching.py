@@ -11,7 +11,7 @@ from analytic.motions.inputs import SampledMotion
 from analytic.motions.matching import match_record, response_spectrum, significant_window
 from analytic.motions.spectra import ec8
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_a_long_sine_at_resonance_and_a_stiff_oscillator():

@@ -23,7 +23,7 @@ from analytic.motions.records import (
 )
 from dem.cli import main
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "ground_motions"
 

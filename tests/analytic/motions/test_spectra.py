@@ -6,7 +6,7 @@ import pytest
 
 from analytic.motions.spectra import damping_correction, ec8, ntc2018
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_damping_correction():

@@ -8,7 +8,7 @@ from analytic.rocking.dynamics import simulate
 from analytic.rocking.linkage import arch_four_bar, oppenheim_hinges
 from analytic.rocking.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ from analytic.rocking.linkage import arch_four_bar, oppenheim_hinges
 from analytic.rocking.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_below_onset_no_motion():

@@ -10,7 +10,7 @@ from analytic.rocking.impact import energy_restitution, momentum_ratio, post_imp
 from analytic.rocking.linkage import arch_four_bar, oppenheim_hinges
 from analytic.rocking.rocking_block import RockingBlock
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 

@@ -15,7 +15,7 @@ from analytic.rocking.linkage import (
     parse_hinge_angles,
 )
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 
 IDS = ["Sh02-Sd015", "Sh06-Sd020", "Sh1-Sd025"]

@@ -10,7 +10,7 @@ from analytic.rocking.dynamics import integrate
 from analytic.rocking.impact import energy_restitution, post_impact
 from analytic.rocking.rocking_block import RockingBlock
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("b,h", [(0.1, 0.5), (0.3, 0.4), (0.02, 1.0)])

@@ -86,7 +86,7 @@ def test_a_second_writer_of_a_campaign_folder_is_refused(tmp_path, capsys):
     out = tmp_path / "c"
     out.mkdir()
     holder = subprocess.Popen(
-        [sys.executable, "-c", "import sys, time; from specimens.io import exclusive\n"
+        [sys.executable, "-c", "import sys, time; from foundation.io import exclusive\n"
          f"with exclusive({str(out / LOCK_FILE)!r}, 'x'):\n    print('held', flush=True); time.sleep(30)"],
         stdout=subprocess.PIPE, text=True)
     try:

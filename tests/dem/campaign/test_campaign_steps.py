@@ -28,7 +28,7 @@ from dem.experiments.tilt.check import reference_lp
 from specimens.blocks import discretise
 from specimens.catalogue import catalogue_rows, select_specimens
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 pytestmark = pytest.mark.slow  # every test here simulates, spawns processes or runs a campaign
 

@@ -263,7 +263,7 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
 
     from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
     from specimens.blocks import discretise
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     p = argparse.ArgumentParser()
     add_arch_arguments(p)
@@ -291,7 +291,7 @@ def _outcome(options: dict) -> str:
 
     from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
     from specimens.blocks import discretise
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     p = argparse.ArgumentParser()
     add_arch_arguments(p)

@@ -7,7 +7,7 @@ from dem.cli import main
 from dem.common.options import contact_law_settings
 from dem.core.settings import Settings
 from dem.experiments.shake.file import load_shake
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _ns(**kw) -> argparse.Namespace:

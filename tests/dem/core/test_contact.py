@@ -12,7 +12,7 @@ from dem.core.contact import (
 )
 from dem.core.model import as_model, single_block
 from dem.core.settings import Settings
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("kw, msg", [

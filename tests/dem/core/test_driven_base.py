@@ -15,7 +15,7 @@ from dem.experiments.shake.thresholds import threshold
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 ENGINES = [e for e in ("pybullet", "mujoco") if e in available_engines()]
 

@@ -5,7 +5,7 @@ import pytest
 
 from dem.cli import main
 from dem.core.extras import require
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("module, extra", [("mujoco", "mujoco"), ("distributed", "cluster"), ("compas_lmgc90", "lmgc90")])

@@ -5,7 +5,7 @@ import pytest
 from dem.core.model import from_assembly, side_by_side, single_block
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.mark.parametrize("config", ["glued", "free"])

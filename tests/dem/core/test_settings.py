@@ -17,7 +17,7 @@ def test_collapse_confirmation_round_trips_and_old_results_load():
 
     import pytest
 
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     assert Settings().collapse_confirm is None  # the tilt's: a firing is the collapse
     s = Settings(collapse_fraction=1.0, mode_window=(0.015, 0.06), collapse_confirm=2.0)

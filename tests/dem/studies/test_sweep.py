@@ -20,7 +20,7 @@ import pytest
 
 from dem.studies.selftest_cases import _take, evaluate
 from dem.studies.sweep import StudyInterrupted, case_key, load_study, run_study
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 FUNC = evaluate
 NO_DASK = "the cluster extra is not installed (pip install -e '.[cluster]')"

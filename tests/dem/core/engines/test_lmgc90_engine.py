@@ -19,7 +19,7 @@ from dem.core.simulate import simulate  # noqa: E402
 from specimens.blocks import discretise  # noqa: E402
 from specimens.catalogue import get_specimen  # noqa: E402
 from specimens.constants import NO_SLIDING_MU, G  # noqa: E402
-from specimens.errors import ArchdemInputError  # noqa: E402
+from foundation.errors import ArchdemInputError  # noqa: E402
 
 ENGINE = "lmgc90"
 

@@ -13,7 +13,7 @@ from dem.core.model import from_assembly
 from dem.core.settings import Settings
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def test_unknown_engine():

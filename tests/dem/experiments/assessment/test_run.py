@@ -10,7 +10,7 @@ from analytic.motions.spectra import ec8, rebuild
 from dem.cli import main
 from dem.experiments.assessment.run import assess_with_records
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
 from specimens.piers import Piers
 

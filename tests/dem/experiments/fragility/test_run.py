@@ -18,7 +18,7 @@ from dem.experiments.fragility.run import (
 from dem.experiments.shake.run import ShakeProtocol, shake
 from specimens import get_specimen
 from specimens.constants import NO_SLIDING_MU
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 BLOCK = block_structure(0.1, 0.4)  # b/h = 0.25, the validation's block
 RIGID = {"engine": "pybullet", "mu_joint": NO_SLIDING_MU, "mu_base": NO_SLIDING_MU, "planar": True}

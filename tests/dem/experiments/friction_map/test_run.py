@@ -14,7 +14,7 @@ from dem.experiments.friction_map import run as fm
 from dem.experiments.tilt import case as cases
 from dem.studies.sweep import StudyInterrupted
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 GRID = "0.3:1.5:0.1"
 

@@ -41,7 +41,7 @@ def test_a_blocks_frequencies_and_damping(engine):
 
 
 def test_rigid_joints_have_no_free_vibration():
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     with pytest.raises(ArchdemInputError, match="needs compliant joints"):
         free_vibration(single_block(B, H, W, RHO), Settings())

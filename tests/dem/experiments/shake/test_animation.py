@@ -11,7 +11,7 @@ from dem.experiments.shake.animation import animate, read_run
 from dem.experiments.shake.file import save_shake
 from dem.experiments.shake.run import ShakeProtocol, shake
 from specimens.constants import G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.fixture(scope="module")

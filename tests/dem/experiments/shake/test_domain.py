@@ -14,7 +14,7 @@ from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 SPEC = get_specimen("Sh02-Sd020")  # static onset about 0.35 g
 A_MAX_RATIO, SCAN_RATIO, TOL = 4.0, 1.15, 0.01

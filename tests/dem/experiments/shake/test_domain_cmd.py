@@ -8,7 +8,7 @@ import pytest
 
 from dem.cli import main
 from dem.common.options import parse_grid
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 def _json(capsys, argv):

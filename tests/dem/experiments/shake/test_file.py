@@ -13,7 +13,7 @@ from dem.core.settings import Settings
 from dem.experiments.shake.file import load_shake, save_shake
 from dem.experiments.shake.run import ShakeProtocol, motion_trace, shake
 from specimens.constants import NO_SLIDING_MU, G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from tests.dem.experiments.tilt.test_file import assert_same
 
 

@@ -11,7 +11,7 @@ from dem.core.settings import Settings
 from dem.experiments.shake.file import load_shake, save_shake
 from dem.experiments.shake.run import ShakeProtocol, first_rebound, shake
 from specimens.constants import NO_SLIDING_MU, G
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 # full base 0.1 m x height 0.4 m (b/h = 0.25); planar, because the analytic model is 2-D and the
 # 3-D block (0.1 m wide) otherwise rocks out of plane too (measured: 45 mm drift along z, then an

@@ -8,7 +8,7 @@ import pytest
 from dem.experiments.tilt import ensemble
 from dem.experiments.tilt.ensemble import EnsembleResult, tilt_ensemble
 from specimens.catalogue import get_specimen
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 from specimens.imperfection import Imperfection
 
 ARCH = get_specimen("Sh06-Sd020").arch

@@ -9,7 +9,7 @@ from dem.core.model import from_assembly, single_block
 from dem.core.settings import Settings
 from dem.experiments.tilt.file import load_result, save_result
 from dem.experiments.tilt.run import TiltProtocol, tilt
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @pytest.fixture(scope="module")

@@ -67,7 +67,7 @@ def test_hold_lp_start_brackets_the_lp_of_the_assembly(monkeypatch):
     from dem.core.model import from_assembly
     from specimens.blocks import discretise
     from specimens.catalogue import get_specimen
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
     model, settings = from_assembly(asm), Settings()
@@ -150,7 +150,7 @@ def test_hold_first_bracket_costs(monkeypatch, truth, n_last, n_first):
 
 @pytest.mark.parametrize("bad", [(1.01, 0.95), (0.0, 1.0), (0.9,), "lp", (0.9, float("inf"))])
 def test_bad_guess_bracket_is_an_input_error(bad):
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     with pytest.raises(ArchdemInputError, match="guess_bracket"):
         TiltProtocol(guess_bracket=bad)
@@ -226,7 +226,7 @@ def test_rest_rule_on_an_arch_below_and_above_the_lp():
 
 
 def test_rest_rule_inputs():
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     with pytest.raises(ArchdemInputError, match="rest_after"):
         TiltProtocol(rest_after=-0.1)
@@ -257,7 +257,7 @@ def test_hold_search_out_of_simulations_is_an_error_not_a_lambda(monkeypatch):
 
     import dem.experiments.tilt.run as pr
     from dem.core.model import single_block
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
 
     guess, held = 0.5, []
 
@@ -290,7 +290,7 @@ def test_time_scale_of_larger_arches_only():
 
     from dem.core.model import single_block
     from dem.experiments.tilt.run import LENGTH_REF, RC_REF, scaled, time_scale_of
-    from specimens.errors import ArchdemInputError
+    from foundation.errors import ArchdemInputError
     from specimens.catalogue import SPECIMEN_IDS, get_specimen
     from specimens.geometry import PointedArch
 

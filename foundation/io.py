@@ -18,7 +18,7 @@ from typing import Any, Iterator
 
 import numpy as np
 
-from specimens.errors import ArchdemInputError
+from foundation.errors import ArchdemInputError
 
 
 @contextlib.contextmanager

@@ -3,8 +3,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from specimens.errors import ArchdemInputError
-from specimens.io import MAX_GRID_POINTS, parse_grid
+from foundation.errors import ArchdemInputError
+from foundation.io import MAX_GRID_POINTS, parse_grid
 
 
 def test_ranges_include_their_end_and_lists_keep_their_order():
@@ -34,7 +34,7 @@ def test_any_text_gives_a_valid_grid_or_an_input_error(text):
 def test_outputs_are_checked_without_making_anything(tmp_path, monkeypatch):
     """Empty names, folders, names too long for their temporary files, paths under a file or on a
     mount that refuses writes: each one input error, and nothing made."""
-    from specimens.io import can_make_dir, exclusive, writable_dir, writable_file
+    from foundation.io import can_make_dir, exclusive, writable_dir, writable_file
 
     monkeypatch.chdir(tmp_path)
     (tmp_path / "f").write_text("x")
