@@ -42,7 +42,8 @@ def main() -> None:
     rows = []
     for spec in a.settings.split(","):
         eng, dt, it, *law = spec.split(":")
-        st = st0.with_(engine=eng, dt=float(dt), solver_iterations=int(it))
+        st = st0.with_(engine=eng, dt=float(dt),
+                       engine_options={"solver_iterations": int(it)} if eng == "pybullet" else None)
         if law == ["table-5.1"]:
             kn, _, beta = STUDY_JOINTS[a.id]
             st = st.with_(contact_law="compliant", kn=kn, damping_beta=beta)

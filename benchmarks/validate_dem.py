@@ -20,7 +20,7 @@ with the other engine (files named ``..._mujoco``); ``--guess-bracket LO,HI`` st
 from (LO, HI) x the LP instead of ``TiltProtocol.guess_bracket`` (files named ``..._bracketLO-HI``);
 ``--probe-ends first`` simulates both ends of that bracket before bisecting instead of
 ``TiltProtocol.probe_ends`` (files named ``..._probefirst``); ``--iterations N`` runs every
-simulation with N solver iterations per step instead of ``Settings.solver_iterations`` (files
+simulation with N solver iterations per step instead of ``PyBulletOptions.solver_iterations`` (files
 named ``..._itN``); ``--contact C`` cuts every specimen with effective contact C (relieved joints,
 against the LP at the same contact; files named ``..._contactC``).
 """
@@ -161,7 +161,7 @@ def main() -> None:
     ap.add_argument("--no-drift", dest="drift", action="store_false", help="skip the 5 s rest-drift runs")
     ap.add_argument("--guess-bracket", dest="bracket", default=None, metavar="LO,HI",
                     help="first bracket x the LP (default: TiltProtocol.guess_bracket)")
-    ap.add_argument("--iterations", type=int, default=None, help="solver iterations per step (default: Settings')")
+    ap.add_argument("--iterations", type=int, default=None, help="PyBullet's solver iterations per step (default: PyBulletOptions')")
     ap.add_argument("--probe-ends", dest="probe", choices=("first", "last"), default=None,
                     help="when the first bracket's ends are simulated (default: TiltProtocol.probe_ends)")
     ap.add_argument("--contact", type=float, default=1.0, help="effective contact of every joint (default 1)")
@@ -180,7 +180,9 @@ def main() -> None:
     proto_kw = {"start": a.start, **{k: v for k, v in (("hold_time", a.hold), ("ramp_time", a.ramp), ("guess_bracket", bracket),
                                                         ("probe_ends", a.probe)) if v is not None},
                 **({} if a.rest else {"rest_after": None})}
-    settings_kw = {} if a.iterations is None else {"solver_iterations": a.iterations}
+    if a.iterations is not None and a.engine != "pybullet":
+        ap.error("--iterations sets PyBullet's solver iterations (--engine pybullet)")
+    settings_kw = {} if a.iterations is None else {"engine_options": {"solver_iterations": a.iterations}}
     jobs = [(s, c, a.drift, a.engine, proto_kw, settings_kw, a.contact) for c in a.configs.split(",") for s in ids]
     stem = ("validate_dem" if a.start == "lp" else "validate_dem_scan_start") + (f"_hold{a.hold:g}" if a.hold else "") \
         + (f"_ramp{a.ramp:g}" if a.ramp else "") + ("" if a.rest else "_norest") \

@@ -340,6 +340,7 @@ def _read_csv(path: Path, units: str | None, up: str | None) -> dict:
     ib, ix, iz = head.index("block"), head.index("x"), head.index("z")
     il = head.index("layer") if "layer" in head else None
     runs: list[tuple[str, str, list]] = []
+    seen: set[tuple[str, str]] = set()  # the runs' keys: a scan of the runs per row was quadratic in the blocks
     for n, r in enumerate(rows[1:], start=2):
         if len(r) < len(head):
             raise ArchdemInputError(f"{path.name}: row {n} has {len(r)} columns, the header {len(head)}")
@@ -353,10 +354,11 @@ def _read_csv(path: Path, units: str | None, up: str | None) -> dict:
         if runs and runs[-1][:2] == key:
             runs[-1][2].append((x, z))
         else:
-            if any(k[:2] == key for k in runs):
+            if key in seen:
                 raise ArchdemInputError(f"{path.name}: block {key[0]!r} appears in two places (row {n}); "
                                         "list each block's vertices together")
             runs.append((key[0], key[1], [(x, z)]))
+            seen.add(key)
     _check_size(path, sum(role(lay) == "blocks" for _, lay, _ in runs), np.array([p for *_, ps in runs for p in ps]),
                 scale, [_layer_depth(lay, path) for _, lay, _ in runs if role(lay) == "blocks"])
     blocks, supports, joints, pieces = [], [], [], {}

@@ -70,3 +70,30 @@ def kill_once_stored(args: list[str], study: Path, workers: int) -> list[int]:
     finally:
         if p.poll() is None:
             p.kill()
+
+
+def stop_at(args: list[str], sig: int, ready: Callable[[], bool], delay: float = 0.0, timeout: float = 120.0,
+            log: Path | None = None, group: bool = False) -> tuple[int | None, str, list[int]]:
+    """Run the command ``args``; once ``ready()`` holds, wait ``delay`` seconds and send it ``sig`` (to
+    its whole process group with ``group``, as a terminal's Ctrl-C and ``timeout`` do). Returns its
+    exit code (None: it had ended before the signal), its stderr (kept in ``log``) and the pids of
+    its workers at the signal."""
+    log = log or Path(os.devnull)
+    with open(log, "w") as err:
+        p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=err, start_new_session=group)
+        try:
+            t0 = time.monotonic()
+            while not ready():
+                assert p.poll() is None, "the command ended before it was ready to be stopped"
+                assert time.monotonic() - t0 < timeout, f"not ready to be stopped within {timeout:.0f} s"
+                time.sleep(0.05)
+            time.sleep(delay)
+            kids = children(p.pid)
+            ended = p.poll() is not None
+            if not ended:
+                os.killpg(p.pid, sig) if group else p.send_signal(sig)
+            code = p.wait(timeout=timeout)
+        finally:
+            if p.poll() is None:
+                p.kill()
+    return (None if ended else code), (log.read_text() if log != Path(os.devnull) else ""), kids

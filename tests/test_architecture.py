@@ -11,17 +11,21 @@ from pathlib import Path
 
 import pytest
 
+from dem.experiments.registry import DECLARED
+
 ROOT = Path(__file__).resolve().parents[1]
 LAYERS = ("foundation", "specimens", "analytic", "dem")  # lowest first: a module may import its own layer or lower ones
 MAX_COMMENT_BLOCK = 8  # lines; longer explanations belong in docs/
+# the experiment folders are floors in the registry's order, so that a new experiment is its folder plus
+# the registry's line (docs/architecture.md#the-experiment-contract)
+EXPERIMENT_FLOORS = tuple(m.rpartition(".")[0] for m in DECLARED)
 # the floors of analytic and dem, lowest first: a module imports its own sub-package or an earlier one
 # (docs/architecture.md); the package tops, with their docstrings and public names, sit above their floors
 SUBPACKAGES = (
     "analytic.search", "analytic.motions", "analytic.limit", "analytic.rocking", "analytic.compliant",
     "analytic.codes", "analytic",
-    "dem.core", "dem.studies", "dem.common",
-    "dem.experiments.tilt", "dem.experiments.shake", "dem.experiments.fragility", "dem.experiments.friction_map",
-    "dem.experiments.modes", "dem.experiments.record", "dem.experiments.assessment", "dem.experiments.compare_engines",
+    "dem.core", "dem.studies", "dem.common", "dem.experiments.contract",
+    *EXPERIMENT_FLOORS, "dem.experiments.registry",
     "dem.campaign", "dem.cli",
     "dem.experiments", "dem",
 )
@@ -203,8 +207,101 @@ def test_a_planted_cycle_between_subpackages_fails():
     assert later_imports({"dem.experiments.tilt.step_tilt": {"dem.experiments.tilt.run"}}) == []
 
 
+EXPERIMENTS = "dem.experiments."
+
+
+def experiment_of(module: str) -> str | None:
+    """The experiment folder ``module`` belongs to (``dem.experiments.NAME``, a folder), or None (modules of
+    ``dem.experiments`` beside the folders are no experiment)."""
+    top = ".".join(module.split(".")[:3])
+    return top if module.startswith(EXPERIMENTS) and (ROOT / top.replace(".", "/")).is_dir() else None
+
+
+def foreign_submodule_imports(edges: dict[str, set[str]]) -> list[str]:
+    """Imports by a module of one experiment folder of a submodule of another, as "a -> b": another
+    experiment is used only through its package top, its contract (docs/architecture.md)."""
+    return sorted(f"{a} -> {b}" for a in edges for b in edges[a]
+                  if experiment_of(a) and experiment_of(b) and experiment_of(a) != experiment_of(b)
+                  and b != experiment_of(b))
+
+
+def test_experiments_import_each_other_only_through_their_package_top():
+    assert foreign_submodule_imports(import_graph()) == []
+
+
+def test_a_planted_import_of_another_experiments_submodule_fails():
+    """A submodule of another experiment is found (at any depth); its package top, the experiment's
+    own modules and modules outside the experiment folders (the campaign, a registry of them) are not."""
+    edges = {
+        "dem.experiments.fragility.run": {"dem.experiments.shake.run", "dem.experiments.tilt",
+                                          "dem.experiments.fragility.file", "dem.common.arch"},
+        "dem.experiments.fragility.figure": {"dem.experiments.shake.figure"},
+        "dem.experiments.record": {"dem.experiments.shake.thresholds"},
+        "dem.campaign.runner": {"dem.experiments.shake.step_shake"},
+        "dem.experiments.registry": {"dem.experiments.tilt.experiment"},
+    }
+    assert foreign_submodule_imports(edges) == ["dem.experiments.fragility.figure -> dem.experiments.shake.figure",
+                                                "dem.experiments.fragility.run -> dem.experiments.shake.run",
+                                                "dem.experiments.record -> dem.experiments.shake.thresholds"]
+
+
+def test_an_experiments_package_top_is_light():
+    # its contract is re-exported lazily: importing the tops loads none of their modules
+    import subprocess
+    import sys
+
+    tops = sorted(s for s in SUBPACKAGES if s.startswith(EXPERIMENTS))
+    code = (f"import importlib, sys\nfor t in {tops!r}:\n    importlib.import_module(t)\n"
+            "print(' '.join(sorted(m for m in sys.modules if m.startswith('dem.experiments.') and m.count('.') > 2)))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True).stdout
+    assert out.split() == []
+
+
+def test_the_graph_resolves_a_name_of_a_package_top_to_the_top():
+    # `from dem.experiments.shake import threshold` names the package top; `... import thresholds`, a submodule
+    edges = import_graph()
+    assert "dem.experiments.shake" in edges["dem.experiments.record.run"]
+    assert "dem.experiments.shake.run" not in edges["dem.experiments.record.run"]
+
+
 def test_no_import_cycles():
     assert cycles(import_graph()) == []
+
+
+ENGINES = "dem.core.engines"
+
+
+def backend_of(module: str) -> str | None:
+    """The engine a module of ``dem.core.engines`` belongs to (its name starts with the engine's:
+    ``lmgc90_worker`` is LMGC90's), None for the engine-neutral ones (base, inputs, options)."""
+    from dem.core.engines import available_engines
+
+    if not module.startswith(ENGINES + "."):
+        return None
+    leaf = module[len(ENGINES) + 1:].split(".")[0]
+    return next((e for e in available_engines() if leaf.startswith(e)), None)
+
+
+def cross_backend_imports(edges: dict[str, set[str]]) -> list[str]:
+    """Imports from one engine's backend modules into another engine's, as "a -> b" (module names)."""
+    return sorted(f"{a} -> {b}" for a in edges for b in edges[a]
+                  if backend_of(a) and backend_of(b) and backend_of(a) != backend_of(b))
+
+
+def test_no_engine_imports_another():
+    # what two engines share sits in an engine-neutral module (dem.core.model, dem.core.engines.base, inputs, options)
+    edges = import_graph()
+    assert {backend_of(m) for m in edges} - {None} == {"pybullet", "mujoco", "lmgc90"}
+    assert cross_backend_imports(edges) == []
+
+
+def test_a_planted_import_between_engines_fails():
+    edges = {"dem.core.engines.lmgc90_engine": {"dem.core.engines.pybullet_engine", "dem.core.engines.base"},
+             "dem.core.engines.lmgc90_worker": {"dem.core.engines.lmgc90_engine"},
+             "dem.core.engines.mujoco_engine": {"dem.core.engines.options", "dem.core.model"},
+             "dem.core.engines.pybullet_engine": {"dem.core.engines.mujoco_engine"}}
+    assert cross_backend_imports(edges) == ["dem.core.engines.lmgc90_engine -> dem.core.engines.pybullet_engine",
+                                            "dem.core.engines.pybullet_engine -> dem.core.engines.mujoco_engine"]
 
 
 def test_cycle_detection_finds_a_cycle():

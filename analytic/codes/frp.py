@@ -402,8 +402,8 @@ def joint_forces(assembly, strips: Strips) -> dict[str, dict]:
     out = {}
     for j in assembly.joints:
         if strip_joint(j):
-            f, mode = d.at(dist[j.name])
-            out[j.name] = {"s": dist[j.name], "f_fd": f, "T": f * strips.thickness * strips.width, "mode": mode}
+            f, criterion = d.at(dist[j.name])
+            out[j.name] = {"s": dist[j.name], "f_fd": f, "T": f * strips.thickness * strips.width, "mode": criterion}
     return out
 
 

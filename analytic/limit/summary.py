@@ -3,10 +3,9 @@ from __future__ import annotations
 
 import os
 import warnings
-from concurrent.futures import ProcessPoolExecutor
 
 from specimens.blocks import discretise
-from foundation.processes import die_with_parent
+from foundation.processes import worker_pool
 
 
 def analyse(arch, config: str, mu_joint: float, mu_base: float, effective_thickness: float = 1.0,
@@ -201,5 +200,5 @@ def multiplier_series(specimens) -> list[dict]:
     workers = min(len(specimens), os.cpu_count() or 1)
     if workers <= 1:
         return [_series_row(s) for s in specimens]
-    with ProcessPoolExecutor(workers, initializer=die_with_parent) as ex:
+    with worker_pool(workers) as ex:
         return list(ex.map(_series_row, specimens))

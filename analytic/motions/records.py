@@ -84,6 +84,7 @@ class _Src:
                 data = fh.read(MAX_RECORD_BYTES + 1)
                 if len(data) > MAX_RECORD_BYTES:
                     raise self._too_big("holds more")
+            self._check_lines(data)
             # as text mode with universal newlines: \r\n and \r end lines too
             self.lines = data.decode("utf-8", errors="replace").splitlines()
         except FileNotFoundError:
@@ -92,6 +93,20 @@ class _Src:
             raise ArchdemInputError(f"{path}: is a directory, not a record file") from None
         except OSError as exc:
             raise ArchdemInputError(f"{path}: cannot read ({exc.strerror})") from None
+
+    def _check_lines(self, data: bytes) -> None:
+        """Refuse, before the text is split into lines (a second per 10 million), a file with more lines
+        that start with data than a record holds samples: each such line holds one sample or more, and
+        a header is at most :data:`MAX_HEADER_LINES`."""
+        if data.count(b"\n") + data.count(b"\r") <= MAX_RECORD_SAMPLES:
+            return
+        b = np.frombuffer(data, np.uint8)
+        starts = np.concatenate(([0], np.flatnonzero((b == 10) | (b == 13)) + 1))
+        first = b[starts[starts < len(b)]]
+        n = int(np.count_nonzero(~np.isin(first, np.frombuffer(b" \t\r\n\f\v#", np.uint8))))
+        if n - MAX_HEADER_LINES > MAX_RECORD_SAMPLES:
+            raise ArchdemInputError(f"{self.path}: {n} non-blank lines, more than the {MAX_RECORD_SAMPLES} samples a "
+                                    "record may hold; cut the record")
 
     def _too_big(self, what: str) -> ArchdemInputError:
         return ArchdemInputError(f"{self.path}: {what} than the {MAX_RECORD_BYTES // 2**20} MB a record file may "
@@ -149,6 +164,8 @@ MAX_RECORD_PGA_G = 20.0
 MAX_RECORD_BYTES = 64 * 2**20  # real record files are < 5 MB; 1 M samples of a 2-column CSV fit in it
 MAX_RECORD_SAMPLES = 1_000_000  # 10 x a real record (< 100 000 samples)
 MAX_RECORD_S = 1200.0  # s: twice a real record (< 600 s)
+#: Most header lines of a record file (an SMC's text, integer, real and comment lines; an ESM's keys).
+MAX_HEADER_LINES = 1000
 
 
 def _check_size(src: _Src, lineno: int | None, npts: int, dt: float | None = None) -> None:

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 import os
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -23,7 +22,7 @@ from analytic.rocking.mechanism import Mechanism
 from analytic.search import midpoint, search
 from specimens.constants import G
 from foundation.errors import ArchdemInputError
-from foundation.processes import die_with_parent
+from foundation.processes import worker_pool
 
 INPUTS = ("sine", "sine0", "A", "B")
 
@@ -208,7 +207,7 @@ def failure_domain(mech: Mechanism, kind: str, xs: Sequence[float], a_max_ratio:
     if workers <= 1 or len(xs) == 1:
         cols = [_column_job(j) for j in jobs]
     else:
-        with ProcessPoolExecutor(max_workers=min(workers, len(xs)), initializer=die_with_parent) as ex:
+        with worker_pool(min(workers, len(xs))) as ex:
             cols = list(ex.map(_column_job, jobs, chunksize=max(1, len(xs) // (4 * workers))))
     return FailureDomain(kind, tuple(cols), mech.lam, mech.omega0, mech.phi_cr, restitution, (a_min, a_max), tol,
                          "frequency" if kind.startswith("sine") else "duration")

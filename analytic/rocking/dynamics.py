@@ -186,11 +186,11 @@ def simulate(mech: Mechanism, motion: GroundMotion, restitution: float | None = 
     max_ratio = 0.0
 
     def done(collapsed, rule, t_c=None, residual=0.0, t_start=None):
-        mode = None
+        collapse_kind = None
         if collapsed:
-            mode = "first-half-cycle" if not impacts else "after-impact"
+            collapse_kind = "first-half-cycle" if not impacts else "after-impact"
         t = np.concatenate(ts_hist) if ts_hist else np.zeros(0)
-        return Response(collapsed, rule, mode, t_c, max_ratio, residual, tuple(impacts), t_start,
+        return Response(collapsed, rule, collapse_kind, t_c, max_ratio, residual, tuple(impacts), t_start,
                         t, np.concatenate(r_hist) if r_hist else np.zeros(0),
                         np.concatenate(p_hist) if p_hist else np.zeros(0))
 

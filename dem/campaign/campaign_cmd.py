@@ -8,18 +8,7 @@ from pathlib import Path
 
 from dem.common.campaign import CampaignContext
 from dem.common.joints import STUDY_JOINTS
-from dem.common.options import (
-    add_contact_law_arguments,
-    add_engine_argument,
-    contact_law_settings,
-    contact_option,
-    default_of,
-    given,
-    option_name,
-    workers_option,
-    writable_dir,
-)
-from dem.core.engines import available_engines
+from dem.common.options import add_options, contact_law_settings, default_of, given, option_name, writable_dir
 from specimens.catalogue import select_specimens
 from foundation.errors import ArchdemInputError
 
@@ -116,19 +105,9 @@ def _duration(seconds: float) -> str:
 def register(sub) -> None:
     p = sub.add_parser("campaign", help="run the virtual test campaign and write its report")
     p.add_argument("--specimens", default="all", help="all or a comma-separated list of ids")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(CampaignContext, "config"))
-    p.add_argument("--contact", type=contact_option, default=default_of(CampaignContext, "contact"), metavar="C|calibrated",
-                   help="effective contact of every joint in every step, in (0, 1], or 'calibrated' (archdem calibrate; "
-                        f"the lab step always uses it) (default {default_of(CampaignContext, 'contact'):g}: the full joint)")
-    add_engine_argument(p)
-    p.add_argument("--dynamics-engine", choices=tuple(available_engines()),
-                   default=default_of(CampaignContext, "dynamics_engine"),
-                   help="engine of the shake, record and fragility steps (default "
-                        f"{default_of(CampaignContext, 'dynamics_engine')}; --engine runs the others)")
-    add_contact_law_arguments(p)
+    add_options(p, "campaign", out="runs/campaign", **{k: default_of(CampaignContext, k) for k in
+                                                       ("config", "contact", "dynamics_engine")})
     p.add_argument("--quick", action="store_true", help="coarse version (a few minutes on 2 cores)")
-    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
-    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT: run every sweep there")
     p.add_argument("--steps", default=None, help="comma-separated subset of steps (piers, fragility and drawing only "
                                                  "when named or with --piers / --fragility / --drawing)")
     p.add_argument("--fragility", action="store_true",
@@ -137,5 +116,4 @@ def register(sub) -> None:
                    help="add the piers study: one arch on piers of growing height, limit analysis and DEM tilt")
     p.add_argument("--drawing", action="store_true",
                    help="add the drawing step: the shipped drawing of an arch on piers, read and run end to end")
-    p.add_argument("--out", default="runs/campaign", help="output directory (resumed if it exists)")
     p.set_defaults(func=_campaign)

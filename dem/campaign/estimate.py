@@ -86,8 +86,8 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     for name in (s for s in steps if s in units):
         n, what = units[name]
         engine = ctx.dynamics_engine if name in DYNAMIC_STEPS else ctx.engine
-        step = DYNAMICS_DT_COST if name in DYNAMIC_STEPS and engine == DYNAMICS_ENGINE else 1.0
+        dt_cost = DYNAMICS_DT_COST if name in DYNAMIC_STEPS and engine == DYNAMICS_ENGINE else 1.0
         # units (or, for thresholds, the simulations inside one unit) run in parallel on the cores
-        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * step * scale
+        unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * dt_cost * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
     return out

@@ -18,39 +18,24 @@ from dem.campaign.step_analytic import step_analytic
 from dem.campaign.step_catalogue import step_catalogue
 from dem.common.campaign import CampaignContext, write_json_atomic
 from dem.core.provenance import provenance
-from dem.experiments.assessment.step_assess import step_assess
-from dem.experiments.fragility.step_fragility import step_fragility
-from dem.experiments.friction_map.step_map import step_map
-from dem.experiments.modes.step_modes import step_modes
-from dem.experiments.record.step_record import step_record
-from dem.experiments.shake.step_shake import step_shake
-from dem.experiments.tilt.step_lab import step_lab
-from dem.experiments.assessment.step_drawing import step_drawing
-from dem.experiments.tilt.step_piers import step_piers
-from dem.experiments.tilt.step_tilt import step_tilt
+from dem.experiments.registry import steps as experiment_steps
 from foundation.errors import ArchdemInputError
 from foundation.io import exclusive
 
 StepFunc = Callable[[CampaignContext, Path], dict]
 
+# the campaign's own steps, first: what every experiment's table stands beside
+_OWN = [("catalogue", step_catalogue, "specimen catalogue, drawings and meshes"),
+        ("analytic", step_analytic, "limit analysis of every specimen")]
 
-# name -> (function, description), in the order the campaign runs them
+# name -> (function, description), in the order the campaign runs them: its own, then the experiments'
+# steps by rank (dem.experiments.registry)
 STEPS: dict[str, tuple[StepFunc, str]] = {
-    "catalogue": (step_catalogue, "specimen catalogue, drawings and meshes"),
-    "analytic": (step_analytic, "limit analysis of every specimen"),
-    "modes": (step_modes, "natural frequencies of every specimen on compliant joints"),
-    "tilt": (step_tilt, "virtual tilt test of every specimen vs limit analysis"),
-    "lab": (step_lab, "virtual vs physical: calibrated imperfect joints against the laboratory tilt tests"),
-    "map": (step_map, "friction threshold map (rocking / sliding)"),
-    "shake": (step_shake, "shake-table thresholds, one-cycle sine pulses, vs four-bar"),
-    "record": (step_record, "recorded accelerogram scaled until collapse"),
-    "piers": (step_piers, "one arch on piers of growing height: limit analysis and DEM tilt"),
-    "assess": (step_assess, "code-based assessment of the Noh Gumbad vaults, with and without FRP strips"),
-    "fragility": (step_fragility, "fragility curves from ensembles of perturbed realisations under sine pulses"),
-    "drawing": (step_drawing, "the shipped drawing of an arch on piers: limit analysis, DEM tilt, code checks"),
+    **{name: (func, desc) for name, func, desc in _OWN},
+    **{s.name: (s.load(), s.description) for s in experiment_steps()},
 }
 #: Steps run only when asked for (``--steps``, ``archdem campaign --piers``, ``--fragility`` or ``--drawing``).
-OPTIONAL_STEPS = ("piers", "fragility", "drawing")
+OPTIONAL_STEPS = tuple(s.name for s in experiment_steps() if s.optional)
 
 
 def all_steps() -> dict[str, tuple[StepFunc, str]]:
@@ -96,6 +81,8 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
     manifest.setdefault("parameters", params)
     manifest.setdefault("steps", {})
     manifest["provenance"] = provenance()
+    # the campaign's parameters before its first step: a campaign stopped in it resumes as itself
+    write_json_atomic(manifest_path, manifest)
     for name in steps or default_steps():
         func, desc = STEPS[name]
         if name in manifest["steps"]:
@@ -110,7 +97,11 @@ def _run_campaign(ctx: CampaignContext, steps: list[str] | None) -> dict:
             shutil.rmtree(tmp)
         tmp.mkdir()
         t0 = time.perf_counter()
-        outputs = func(ctx, tmp)
+        try:
+            outputs = func(ctx, tmp)
+        except BaseException:  # Ctrl-C, SIGTERM, an error: no half-written step is left (its studies are kept)
+            shutil.rmtree(tmp, ignore_errors=True)
+            raise
         wall = time.perf_counter() - t0
         final = out / name
         if final.exists():

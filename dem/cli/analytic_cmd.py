@@ -8,7 +8,7 @@ import math
 
 from analytic.limit.summary import ARCH_ONLY_ANALYSES, analyse, analyse_drawing
 from dem.common.options import (
-    add_arch_arguments,
+    add_options,
     arch_from_args,
     default_of,
     density_text,
@@ -50,11 +50,7 @@ def register(sub) -> None:
                        description=" ".join(line.strip() for line in __doc__.split("\n\n")[0].splitlines()),
                        # raw: the terms' table keeps its lines
                        epilog=TERMS, formatter_class=argparse.RawDescriptionHelpFormatter)
-    add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"),
-                   help="discrete configuration")
-    p.add_argument("--mu-joint", type=float, default=None, help=f"block-block friction (default {REFERENCE_MU_JOINT:g})")
-    p.add_argument("--mu-base", type=float, default=None, help=f"block-base friction (default {REFERENCE_MU_BASE:g})")
+    add_options(p, "analytic")
     p.add_argument("--effective-thickness", type=float, default=default_of(analyse, "effective_thickness"),
                    help="continuous analysis of the thinner ring: fraction of t kept about Rp, its "
                         "weight included (unlike --contact, which keeps the full weight) "
@@ -66,18 +62,7 @@ def register(sub) -> None:
                    help="associative (default): the LP's sliding joints dilate (an upper bound); "
                         "non-associative: also the least multiplier without dilatancy at the same frictions "
                         "(a mixed-integer program, about 1 s for a catalogue arch)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--plot", metavar="DIR", default=None,
-                   help="write the catalogue / full-scale figures to DIR (no id needed)")
     p.set_defaults(func=run)
-
-
-def _finite_mu(name: str, v: float | None, default: float) -> float:
-    if v is None:
-        return default
-    if not (v >= 0):
-        raise ArchdemInputError(f"{name} must be >= 0 (inf allowed), got {v}")
-    return float(v)
 
 
 def _lam(v: float | None, fmt: str = ".4f") -> str:
@@ -136,11 +121,10 @@ def run(args: argparse.Namespace) -> int:
         else:
             for f in files:
                 print(f)
-        if args.id is None and all(getattr(args, k) is None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "geometry")):
-            return 0
+        return 0  # the table refuses --plot beside an arch
     label, arch = arch_from_args(args)
-    mu_j = _finite_mu("--mu-joint", args.mu_joint, REFERENCE_MU_JOINT)
-    mu_b = _finite_mu("--mu-base", args.mu_base, REFERENCE_MU_BASE)
+    mu_j = REFERENCE_MU_JOINT if args.mu_joint is None else args.mu_joint
+    mu_b = REFERENCE_MU_BASE if args.mu_base is None else args.mu_base
     if isinstance(arch, DrawnAssembly):
         return _run_drawing(args, label, arch, mu_j, mu_b)
     if not (0.05 <= args.effective_thickness <= 1):

@@ -6,7 +6,7 @@ import argparse
 from dem.cli.mesh_cmd import assembly_from_args
 from dem.common.options import (
     PLANE_DEPTH_M,
-    add_arch_arguments,
+    add_options,
     default_of,
     density_text,
     discretisation_kwargs,
@@ -48,8 +48,6 @@ def _draw(args: argparse.Namespace) -> int:
 
 def register(sub) -> None:
     p = sub.add_parser("draw", help="engineering drawing of an arch")
-    add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    add_options(p, "draw")
     p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
-    p.add_argument("--out", required=True, help="output image (.png/.pdf/.svg)")
     p.set_defaults(func=_draw)

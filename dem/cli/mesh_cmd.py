@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_arch_arguments, arch_from_args, default_of, discretisation_kwargs, writable_dir
+from dem.common.options import add_options, arch_from_args, default_of, discretisation_kwargs, writable_dir
 from specimens.blocks import discretise
 
 
@@ -28,9 +28,7 @@ def _mesh(args: argparse.Namespace) -> int:
 
 def register(sub) -> None:
     p = sub.add_parser("mesh", help="export voussoir meshes (convex pieces) of an arch")
-    add_arch_arguments(p)
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    add_options(p, "mesh")
     p.add_argument("--shape", choices=("linearised", "curved"), default=default_of(discretise, "shape"))
     p.add_argument("--format", choices=("stl", "obj", "glb"), default="stl")
-    p.add_argument("--out", required=True, help="output directory")
     p.set_defaults(func=_mesh)

@@ -69,7 +69,7 @@ def _run_rock(args: argparse.Namespace) -> int:
 def register(sub) -> None:
     q = sub.add_parser("rock", help="one time history of a rocking linkage",
                        description="One time history: rotation / phi_cr against time, impacts, collapse rule.")
-    add_linkage_arguments(q)
+    add_linkage_arguments(q, "rock")
     q.add_argument("--freq", type=float, default=None, help="sine frequency [Hz]")
     q.add_argument("--duration", type=float, default=None, help="pulse duration t_i [s] (pulses A/B)")
     q.add_argument("--amplitude", type=float, default=None, help="amplitude [g]")

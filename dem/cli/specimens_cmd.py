@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import print_json
+from dem.common.options import add_options, print_json
 from specimens.catalogue import JSON_KEYS, catalogue_rows
 
 
@@ -24,5 +24,5 @@ def _specimens(args: argparse.Namespace) -> int:
 
 def register(sub) -> None:
     p = sub.add_parser("specimens", help="table of the specimen catalogue")
-    p.add_argument("--json", action="store_true", help="print a JSON list")
+    add_options(p, "specimens")
     p.set_defaults(func=_specimens)

@@ -1,12 +1,13 @@
 """What every campaign step gets (:class:`CampaignContext`) and the small file helpers they share."""
 from __future__ import annotations
 
-import csv
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 from dem.common.joints import contact_fraction, joint_law, joint_law_text
+from dem.common.tables import Schema
+from dem.common.tables import write_csv as write_table
 from dem.core.settings import DYNAMICS_ENGINE, Settings, dynamics_settings
 from foundation.io import atomic_path, to_json
 
@@ -45,12 +46,10 @@ class CampaignContext:
         return contact_fraction(self.contact, spec.arch)
 
 
-def write_csv(path: Path, rows: list[dict]) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+def write_csv(path: Path, rows: list[dict], schema: Schema | None = None) -> None:
+    """A step's table, with its schema (given, or inferred from the values) beside it: the report and
+    ``campaign.h5`` read it back typed (:mod:`dem.common.tables`)."""
+    write_table(path, rows, schema)
 
 
 def pct(a: float, b: float) -> float:

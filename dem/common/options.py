@@ -1,4 +1,5 @@
-"""Helpers shared by the sub-commands: arch selection, JSON output, output paths."""
+"""What the sub-commands share: the option table (every shared option declared once, with where it
+applies), arch selection, JSON output, output paths."""
 from __future__ import annotations
 
 import argparse
@@ -8,15 +9,21 @@ import json
 import math
 import os
 import sys
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from analytic.compliant.modes import KS_OVER_KN
+from analytic.motions.records import UNIT_FACTORS
 from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
 from dem.core.engines import available_engines
+from dem.core.engines.options import PyBulletOptions
 from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
 from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M, MIN_LENGTH_M  # lengths an option takes [m]
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from specimens.drawn import DRAWN_CONFIG, MAX_BLOCKS, DrawnAssembly, gaps_text
 from foundation.errors import ArchdemInputError
 from specimens.exchange import UNITS, read_assembly
@@ -25,6 +32,8 @@ from foundation.io import can_make_dir, check_name, json_default, unique_run_pat
 from foundation.io import parse_grid as _parse_grid
 from specimens.piers import MAX_COURSES, Piers
 
+#: The units of a record's numbers (archdem shake --record --units).
+RECORD_UNITS = tuple(UNIT_FACTORS)
 #: Densities the commands take [kg/m^3].
 DENSITY_RANGE = (1.0, 1e5)
 
@@ -47,46 +56,6 @@ def default_of(obj: Any, name: str) -> Any:
     if par is None or par.default is inspect.Parameter.empty:
         raise LookupError(f"{getattr(obj, '__name__', obj)}() has no default for {name!r}")
     return par.default
-
-
-def add_arch_arguments(p: argparse.ArgumentParser, id_required: bool = False) -> None:
-    """Arch by catalogue id (positional) or by parameters."""
-    p.add_argument("id", nargs=None if id_required else "?", help="specimen id (see `archdem specimens`)")
-    g = p.add_argument_group(f"arch by parameters (instead of an id; SI units, m; lengths {MIN_LENGTH_M:g} to "
-                                f"{MAX_LENGTH_M:g} m)")
-    for name in ("Ri", "Re", "e", "Sh", "Sd", "Rc"):
-        g.add_argument(f"--{name}", type=float, default=None)
-    g.add_argument("--width", type=float, default=None,
-                   help=f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})")
-    g.add_argument("--voussoirs", type=int, default=None,
-                   help=f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})")
-    g.add_argument("--density", type=float, default=None,
-                   help=f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default {DEFAULT_DENSITY:g}) "
-                        f"of the specimens' aerated concrete; a drawing's: the one its file states, else "
-                        f"{DRAWN_DENSITY:g}, masonry. Masses and forces scale with it; a uniform density changes no "
-                        "multiplier (LP, tilt lambda)")
-    add_pier_arguments(p)
-    add_geometry_arguments(p)
-    p.add_argument("--contact", type=contact_option, default=None, metavar="C|calibrated",
-                   help="effective contact: every joint touches within its central fraction C of the depth, "
-                        "in (0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests "
-                        "(archdem calibrate); masses stay those of the full blocks "
-                        f"(default {default_of(discretise, 'contact'):g}: the full joint)")
-
-
-def add_geometry_arguments(p: argparse.ArgumentParser) -> None:
-    """``--geometry FILE --units U --depth D`` (see :func:`specimens.exchange.read_assembly`); ``--density``
-    is the arch's option (read by :func:`geometry_from_args` where the command has it)."""
-    g = p.add_argument_group("a structure from a drawing instead (docs/physics/geometry.md#16-assemblies-from-drawings)")
-    g.add_argument("--geometry", default=None, metavar="FILE",
-                   help="blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl (convex prisms); "
-                        f"at most {MAX_BLOCKS} blocks and {MAX_LENGTH_M:g} m across")
-    g.add_argument("--units", default=None, metavar="U",
-                   help=f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m); "
-                        "with --record, the record's units if its file does not say (g, m/s2, cm/s2, mm/s2)")
-    g.add_argument("--depth", type=float, default=None, metavar="D",
-                   help="out-of-plane depth of the drawn blocks [m] where the drawing does not state it "
-                        "(archdem draw: optional, a plane drawing needs none)")
 
 
 #: The depth [m] `archdem draw` gives blocks that state none (a plane drawing: masses per metre of depth).
@@ -119,25 +88,6 @@ def density_text(asm: DrawnAssembly) -> str:
     why = {"given": "--density", "file": "stated by the file"}.get(asm.source.get("density_from"),
                                                                    "archdem's default for drawings; --density sets it")
     return f"density {asm.density:g} kg/m^3 ({why})"
-
-
-def add_pier_arguments(p: argparse.ArgumentParser) -> None:
-    """The ``--pier-*`` options (see :func:`piers_from_args`)."""
-    g = p.add_argument_group("piers (the arch on two equal piers instead of the rigid base; lengths in m)")
-    g.add_argument("--pier-height", type=float, default=None, metavar="H",
-                   help="pier height from the ground to the springing line")
-    g.add_argument("--pier-width", type=float, default=None, metavar="B",
-                   help="in-plane pier width, at least the ring thickness plus the offset")
-    g.add_argument("--pier-depth", type=float, default=None, metavar="D",
-                   help="out-of-plane pier depth (default: the arch's width)")
-    g.add_argument("--pier-offset", type=float, default=None, metavar="O",
-                   help="how far the pier's inner face stands inside the opening beyond the intrados springing "
-                        f"(default {default_of(Piers, 'offset'):g})")
-    g.add_argument("--pier-courses", type=int, default=None, metavar="N",
-                   help=f"courses per pier, 1 to {MAX_COURSES} (default {default_of(Piers, 'courses')})")
-    g.add_argument("--pier-load", type=float, default=None, metavar="KN",
-                   help=f"superimposed load on each pier [kN], 0 to {MAX_PIER_LOAD_KN:g}, e.g. the masonry above: "
-                        "carried as mass at the centre of the pier's top (default 0)")
 
 
 def arch_from_args(args: argparse.Namespace):
@@ -215,8 +165,8 @@ MAX_VOUSSOIRS = 100
 
 
 def block_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
-    """``(B, H)`` [m] of ``--block`` (half-width, half-height) when given; refused beside an arch, its
-    piers or its contact; with neither a block nor an arch, one line asking for one."""
+    """``(B, H)`` [m] of ``--block`` (half-width, half-height) when given; refused beside an arch (the
+    option table refuses its piers and contact); with neither a block nor an arch, one line asking for one."""
     arch_given = args.id is not None or any(getattr(args, k, None) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc",
                                                                                         "geometry"))
     if args.block is None:
@@ -225,8 +175,6 @@ def block_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
         return None
     if arch_given:
         raise ArchdemInputError("give either --block B H or an arch, not both")
-    if piers_from_args(args) is not None or getattr(args, "contact", None) is not None:
-        raise ArchdemInputError("--pier-* and --contact belong to an arch, not to --block")
     return float(args.block[0]), float(args.block[1])
 
 
@@ -370,6 +318,7 @@ def common_rules(args: argparse.Namespace) -> None:
         if isinstance(v, str) and not v.strip():
             raise ArchdemInputError(f"{option_name(dest)} is empty; give a name")
     option_used(args, "workers", not getattr(args, "scheduler", None), "a --scheduler's cluster runs the cases")
+    refuse_unused(args)
 
 
 #: Options that name an output or a study file.
@@ -400,8 +349,12 @@ def restore_study(args: argparse.Namespace) -> None:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.studies.sweep import canonical_json, stored_definition
 
-    if not os.path.isfile(args.resume):
-        return  # study_path refuses it in its words
+    if getattr(args, "out", None):  # said first: which of the two was meant is the user's to say
+        raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
+    if os.path.isdir(args.resume):
+        raise ArchdemInputError(f"--resume {args.resume} is a folder; a study is one .h5 file")
+    if not os.path.isfile(args.resume):  # said before any option the study would have given is missed
+        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
     stored = stored_definition(args.resume)
     if stored is None:
         return
@@ -420,31 +373,8 @@ def _shown(v: Any) -> str:
     return " ".join(map(str, v)) if isinstance(v, (list, tuple)) else str(v)
 
 
-def add_friction_arguments(p: argparse.ArgumentParser, what: str = "") -> None:
-    """``--mu-joint`` and ``--mu-base`` with the settings' defaults."""
-    for name, text in (("mu_joint", "block-block"), ("mu_base", "block-base")):
-        p.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, default=default_of(Settings, name),
-                       help=f"{what}{text} friction (default {default_of(Settings, name):g})")
-
-
 def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
-
-
-def add_engine_argument(p: argparse.ArgumentParser, dynamics: bool = False) -> None:
-    """``--engine pybullet|mujoco|lmgc90`` (the physics backend of the simulator); its default is the
-    statics' (:class:`Settings`), or with ``dynamics`` the shakes' (:data:`DYNAMICS_ENGINE`)."""
-    engine = DYNAMICS_ENGINE if dynamics else default_of(Settings, "engine")
-    p.add_argument("--engine", choices=tuple(available_engines()), default=engine,
-                   help=f"physics engine (default {engine}; see docs/engines.md §5)")
-
-
-def add_dynamics_dt_argument(p: argparse.ArgumentParser, prefix: str = "") -> None:
-    """``--dt`` of a dynamic command: :data:`DYNAMICS_DT` on the shakes' engine, the protocol's step on
-    the others (:func:`dem.core.settings.dynamics_settings`)."""
-    p.add_argument("--dt", type=float, default=None,
-                   help=f"{prefix}time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, "
-                        f"{default_of(Settings, 'dt'):g} on the other engines)")
 
 
 def parse_grid(text: str, what: str = "--freq") -> list[float]:
@@ -452,26 +382,12 @@ def parse_grid(text: str, what: str = "--freq") -> list[float]:
     return _parse_grid(text, what)
 
 
-#: The destinations of :func:`add_contact_law_arguments`.
-CONTACT_LAW_DESTS = ("contact_law", "kn", "youngs", "ks", "damping_beta", "damping_xi", "joints")
-
-
-def add_contact_law_arguments(p: argparse.ArgumentParser) -> None:
-    """``--contact-law rigid|compliant --kn --damping-beta|--damping-xi`` and ``--joints table-5.1``."""
-    law = default_of(Settings, "contact_law")
-    p.add_argument("--contact-law", dest="contact_law", choices=CONTACT_LAWS, default=None,
-                   help=f"joints: as stiff as the engine makes them, or springs (default {law}; compliant with --kn)")
-    p.add_argument("--kn", type=float, default=None, help="normal joint stiffness per unit area [Pa/m] (compliant)")
-    p.add_argument("--youngs", type=float, default=None, metavar="E_PA",
-                   help="or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints")
-    p.add_argument("--ks", type=float, default=None, help="not taken: the engines' joints stick rigidly until they slide")
-    p.add_argument("--damping-beta", dest="damping_beta", type=float, default=None,
-                   help="stiffness-proportional Rayleigh damping beta_R of the joints [s] "
-                        f"(default {default_of(Settings, 'damping_beta'):g})")
-    p.add_argument("--damping-xi", dest="damping_xi", type=float, default=None,
-                   help=f"or the joints' damping ratio at the rotational-impact frequency, 0-{MAX_DAMPING_XI:g}")
-    p.add_argument("--joints", choices=JOINT_SETS, default=None,
-                   help="the reference study's joints of a catalogue specimen (k_n and beta_R of its Table 5.1)")
+def settings_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+    """The :class:`Settings` fields of a simulating command's options: frictions, engine, the plane, the
+    step and the joint law (``--joints table-5.1`` of the specimen id)."""
+    kw = {"mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": bool(args.planar), "engine": args.engine,
+          **contact_law_settings(args, getattr(args, "id", None))}
+    return kw | ({"dt": args.dt} if args.dt is not None else {})
 
 
 def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
@@ -488,13 +404,10 @@ def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> d
 
 def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
     """The options' law, checked by :class:`dem.core.settings.Settings` (its checks and messages); the
-    command line adds only what is its own: --ks, --joints beside the other options, and the law
-    implied by --kn/--youngs/--damping-* without --contact-law."""
+    command line adds only what is its own: --joints beside the other options, and the law implied by
+    --kn/--youngs/--damping-* without --contact-law (the option table refuses --ks)."""
     kn, youngs, beta, xi = (getattr(args, k, None) for k in ("kn", "youngs", "damping_beta", "damping_xi"))
     law = getattr(args, "contact_law", None)
-    if getattr(args, "ks", None) is not None:
-        raise ArchdemInputError("--ks: the engines' joints stick rigidly until they slide; shear stiffness goes to "
-                                "archdem modes")
     given = {k: v for k, v in (("kn", kn), ("youngs", youngs), ("damping_beta", beta), ("damping_xi", xi))
              if v is not None}
     if getattr(args, "joints", None) == STUDY_JOINTS:
@@ -507,3 +420,280 @@ def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str,
     out = {"contact_law": law, **given}
     Settings(**out)  # the law's own checks and messages
     return {} if law == "rigid" else out
+
+
+def friction_option(text: str) -> float:
+    """``--mu-joint``/``--mu-base``: a friction coefficient >= 0, ``inf`` for no sliding (the limit
+    analyses'); a simulation takes :data:`~dem.core.settings.MIN_FRICTION` to ``MAX_FRICTION``
+    (:class:`Settings` checks it)."""
+    try:
+        v = float(text)
+    except ValueError:
+        v = math.nan
+    if not v >= 0:
+        raise argparse.ArgumentTypeError(f"must be a friction coefficient >= 0 (inf: no sliding), got {text!r}")
+    return v
+
+
+# ------------------------------------------------------------------ the option table
+#: A condition under which an option does something, on the parsed options.
+Condition = Callable[[argparse.Namespace], bool]
+#: Where an option applies in one command: its condition (None: always) and what it belongs to.
+Rule = tuple[Condition | None, str]
+
+
+@dataclass(frozen=True)
+class Option:
+    """One command-line option, declared once: its flags, help, argparse keywords (``type`` is its one
+    validator where the library has none of its own; a default only from a library object), ``where``:
+    per command, the condition under which it does something and what it belongs to otherwise, and
+    ``per``: a command's own keywords (help, choices, default)."""
+
+    flags: tuple[str, ...]
+    help: str
+    where: dict[str, Rule]
+    kw: dict[str, Any] = field(default_factory=dict)
+    per: dict[str, dict[str, Any]] = field(default_factory=dict)
+    group: str = ""
+    example: str | None = "1"  # a value the parser takes (None: a flag)
+
+    @property
+    def dest(self) -> str:
+        return self.kw.get("dest") or self.flags[0].lstrip("-").replace("-", "_")
+
+
+def _on(commands: str, cond: Condition | None = None, why: str = "", **own: Rule) -> dict[str, Rule]:
+    """``where``: the same rule in each of the space-separated ``commands``, other rules in ``own``."""
+    return {c: (cond, why) for c in commands.split()} | {k.replace("_", "-"): v for k, v in own.items()}
+
+
+def _drawing(a: argparse.Namespace) -> bool:
+    return getattr(a, "geometry", None) is not None
+
+
+def _arch(a: argparse.Namespace) -> bool:
+    return getattr(a, "block", None) is None
+
+
+def _dem(a: argparse.Namespace) -> bool:  # archdem domain: the DEM's domain, not the analytic linkage's
+    return a.engine != "analytic"
+
+
+def _no_ensemble(a: argparse.Namespace) -> bool:
+    return a.ensemble is None
+
+
+def _arch_given(a: argparse.Namespace) -> bool:
+    return a.id is not None or any(getattr(a, k, None) is not None for k in ARCH_PARAMETERS + ("geometry",))
+
+
+def campaign_steps(args: argparse.Namespace) -> set[str] | None:
+    """The steps ``--steps`` and ``--piers/--fragility/--drawing`` name (None: the default steps, every kind)."""
+    if args.steps is None:
+        return None
+    return {s.strip() for s in args.steps.split(",")} | {n for n in ("piers", "fragility", "drawing") if getattr(args, n)}
+
+
+def _steps(names: str, what: str) -> Rule:
+    return (lambda a: (s := campaign_steps(a)) is None or bool(s & set(names.split())),
+            f"no step named by --steps {what}")
+
+
+ARCH_PARAMETERS = ("Ri", "Re", "e", "Sh", "Sd", "Rc")
+#: The commands that take an arch (an id, parameters or a drawing); those that take a --block too.
+ARCH_COMMANDS = "tilt shake threshold analytic domain rock mesh draw assess fragility modes"
+BLOCK_COMMANDS = "fragility modes rock domain"
+_ARCH_ONLY = _on(BLOCK_COMMANDS, _arch, "it belongs to an arch, not to a --block")
+_DEM = (_dem, "it is the DEM's (--engine dem)")
+_ENSEMBLE_RUNS = (_no_ensemble, "an ensemble runs the default hold protocol")
+#: Campaign steps by what they read: the joint law, the statics' engine, the shakes', the sweeps'
+#: processes, the contact fraction.
+_LAW = _on("tilt shake threshold fragility map", tilt=(_no_ensemble, "an ensemble runs rigid joints"), domain=_DEM,
+           campaign=_steps("modes tilt lab map piers shake record fragility drawing", "runs joints"))
+_SWEEPS = _steps("tilt lab map piers shake record fragility", "runs a sweep")
+_DT = f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, {default_of(Settings, 'dt'):g} on the other engines)"
+
+OPTIONS: tuple[Option, ...] = (
+    Option(("id",), "specimen id (see `archdem specimens`)", _on(ARCH_COMMANDS), {"nargs": "?"}, example="Sh02-Sd020"),
+    *(Option((f"--{k}",), "", _on(ARCH_COMMANDS), {"type": float}, group="arch", example="0.2") for k in ARCH_PARAMETERS),
+    Option(("--width",), f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})",
+           _on(ARCH_COMMANDS), {"type": float}, group="arch", example="0.2"),
+    Option(("--voussoirs",), f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})",
+           _on(ARCH_COMMANDS) | _ARCH_ONLY, {"type": int}, group="arch", example="4"),
+    Option(("--density",), f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default "
+           f"{DEFAULT_DENSITY:g}) of the specimens' aerated concrete; a drawing's: the one its file states, else "
+           f"{DRAWN_DENSITY:g}, masonry. Masses and forces scale with it; a uniform density changes no multiplier "
+           "(LP, tilt lambda)", _on(ARCH_COMMANDS, tilt=(_no_ensemble, "an ensemble uses the default density")),
+           {"type": float}, group="arch", example="2000"),
+    *(Option((f"--pier-{k}",), text, _on(ARCH_COMMANDS + " map") | _on(BLOCK_COMMANDS, _arch, "it sets an arch on "
+             "piers, not a --block"), {"type": kind, "metavar": m}, group="piers", example=x) for k, m, kind, x, text in (
+        ("height", "H", float, "0.2", "pier height from the ground to the springing line"),
+        ("width", "B", float, "0.1", "in-plane pier width, at least the ring thickness plus the offset"),
+        ("depth", "D", float, "0.1", "out-of-plane pier depth (default: the arch's width)"),
+        ("offset", "O", float, "0", "how far the pier's inner face stands inside the opening beyond the intrados "
+                                    f"springing (default {default_of(Piers, 'offset'):g})"),
+        ("courses", "N", int, "2", f"courses per pier, 1 to {MAX_COURSES} (default {default_of(Piers, 'courses')})"),
+        ("load", "KN", float, "1", f"superimposed load on each pier [kN], 0 to {MAX_PIER_LOAD_KN:g}, e.g. the masonry "
+                                   "above: carried as mass at the centre of the pier's top (default 0)"))),
+    Option(("--geometry",), "blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl "
+           f"(convex prisms); at most {MAX_BLOCKS} blocks and {MAX_LENGTH_M:g} m across", _on(ARCH_COMMANDS + " map"),
+           {"metavar": "FILE"}, group="drawing", example="arch.dxf"),
+    Option(("--units",), f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m)",
+           _on(ARCH_COMMANDS + " map", _drawing, "it is a drawing's length unit (--geometry)", shake=(
+               lambda a: _drawing(a) or a.record is not None, "it is a drawing's length unit (--geometry) or a "
+                                                              "record's (--record)"), record=(None, "")),
+           {"metavar": "U", "choices": tuple(UNITS)},
+           {"shake": {"choices": (*UNITS, *RECORD_UNITS), "help": "length unit of the drawing if the file does not "
+                      f"state it ({', '.join(UNITS)}; default m); with --record, the record's units if its file does "
+                      f"not say ({', '.join(RECORD_UNITS)})"},
+            "record": {"choices": RECORD_UNITS, "help": "units of the numbers in the file (needed for CSV without units "
+                                                        "in its header)"}}, group="drawing", example="mm"),
+    Option(("--depth",), "out-of-plane depth of the drawn blocks [m] where the drawing does not state it (archdem "
+           "draw: optional, a plane drawing needs none)",
+           _on(ARCH_COMMANDS + " map", _drawing, "it is the depth of a drawing's blocks (--geometry)"),
+           {"type": float, "metavar": "D"}, group="drawing", example="0.1"),
+    Option(("--contact",), "effective contact: every joint touches within its central fraction C of the depth, in "
+           "(0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests (archdem calibrate); masses stay "
+           f"those of the full blocks (default {default_of(discretise, 'contact'):g}: the full joint)",
+           _on(ARCH_COMMANDS + " map") | _ARCH_ONLY
+           | {"campaign": _steps("catalogue analytic modes tilt map piers shake record", "cuts joints")},
+           {"type": contact_option, "metavar": "C|calibrated"},
+           {c: {"help": "effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate) "
+                        "(default {default:g}: the full joint)"} for c in ("map", "campaign")}, example="0.9"),
+    Option(("--block",), "a rectangular block of half-width B and half-height H [m] instead of an arch",
+           _on(BLOCK_COMMANDS), {"nargs": 2, "type": float, "metavar": ("B", "H")}, example=None),
+    Option(("--config",), "discrete configuration: the crown glued or free (default {default})",
+           _on("tilt shake threshold analytic mesh draw map", lambda a: not _drawing(a),
+               "a drawing's blocks are as drawn, with no glued or free crown")
+           | _on("fragility modes", lambda a: _arch(a) and not _drawing(a),
+                 "a drawing's blocks are as drawn, and a --block is one block: no glued or free crown")
+           | _on("campaign compare-engines compare-shake", domain=_DEM),
+           {"choices": ("glued", "free"), "default": default_of(discretise, "config")},
+           {"domain": {"help": "DEM: discrete configuration"}}, example="free"),
+    Option(("--mu-joint",), "block-block friction (default {default:g})",
+           _on("tilt shake threshold analytic", fragility=(_arch, "a --block has no joint between blocks (its "
+                                                                   "friction is --mu-base)"), domain=_DEM),
+           {"type": friction_option, "default": default_of(Settings, "mu_joint")},
+           {"fragility": {"help": "nominal block-block friction (default {default:g})"},
+            "analytic": {"default": None, "help": f"block-block friction (default {REFERENCE_MU_JOINT:g})"},
+            "domain": {"default": None, "help": f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})"}},
+           example="0.6"),
+    Option(("--mu-base",), "block-base friction (default {default:g})",
+           _on("tilt shake threshold analytic fragility map", domain=_DEM),
+           {"type": friction_option, "default": default_of(Settings, "mu_base")},
+           {"fragility": {"help": "nominal block-base friction (default {default:g})"},
+            "analytic": {"default": None, "help": f"block-base friction (default {REFERENCE_MU_BASE:g})"},
+            "domain": {"default": None, "help": f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})"}},
+           example="0.7"),
+    Option(("--planar",), "constrain the blocks to the arch plane", _on("shake threshold fragility",
+           tilt=_ENSEMBLE_RUNS), {"action": "store_true"}, example=None),
+    Option(("--dt",), _DT, _on("shake threshold fragility compare-engines", tilt=_ENSEMBLE_RUNS,
+                              domain=(_dem, "it is the DEM's time step (--engine dem or a named engine)")),
+           {"type": float}, {"tilt": {"help": f"time step [s] (default {default_of(Settings, 'dt'):g})"},
+                             "compare-engines": {"help": f"time step [s] for both engines (default "
+                                                         f"{default_of(Settings, 'dt'):g})"},
+                             "domain": {"help": "DEM: " + _DT}}, example="2.5e-4"),
+    Option(("--engine",), "physics engine (default {default}; see docs/engines.md §5)",
+           _on("tilt map shake threshold fragility domain",
+               campaign=_steps("tilt lab map piers drawing", "tilts (--dynamics-engine runs the shakes)"),
+               assess=(lambda a: bool(a.records), "the engine runs the --records on the DEM")),
+           {"choices": tuple(available_engines()), "default": default_of(Settings, "engine")},
+           {c: {"default": DYNAMICS_ENGINE} for c in ("shake", "threshold", "fragility", "assess")}
+           | {"domain": {"choices": ("analytic", "dem", *available_engines()), "default": "analytic",
+                         "help": "analytic linkage, or the DEM: 'dem' runs the shakes' default engine "
+                                 f"({DYNAMICS_ENGINE}), or name one"}}, example="pybullet"),
+    Option(("--dynamics-engine",), "engine of the shake, record and fragility steps (default {default}; --engine "
+           "runs the others)", {"campaign": _steps("shake record fragility", "shakes")},
+           {"choices": tuple(available_engines())}, example="pybullet"),
+    Option(("--solver-iterations",), f"PyBullet's solver iterations per step (default "
+           f"{default_of(PyBulletOptions, 'solver_iterations')})",
+           {"fragility": (lambda a: a.engine == "pybullet", "it is PyBullet's solver (--engine pybullet)")},
+           {"type": int}, example="50"),
+    Option(("--contact-law",), f"joints: as stiff as the engine makes them, or springs (default "
+           f"{default_of(Settings, 'contact_law')}; compliant with --kn)", _LAW, {"choices": CONTACT_LAWS}, group="law",
+           example="rigid"),
+    Option(("--kn",), "normal joint stiffness per unit area [Pa/m] (compliant)", _LAW | _on("modes"),
+           {"type": float}, {"modes": {"help": "normal joint stiffness per unit area [Pa/m]"}}, group="law",
+           example="1e8"),
+    Option(("--youngs",), "or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints",
+           _LAW | _on("modes"), {"type": float, "metavar": "E_PA"}, group="law", example="1e9"),
+    Option(("--ks",), f"shear joint stiffness per unit area [Pa/m] (modes; default {KS_OVER_KN:.3f} kn)",
+           _on(" ".join(_LAW), lambda a: False, "the engines' joints stick rigidly until they slide; shear stiffness "
+               "goes to archdem modes") | _on("modes"), {"type": float}, group="law", example="1e8"),
+    Option(("--damping-beta",), "stiffness-proportional Rayleigh damping beta_R of the joints [s] "
+           f"(default {default_of(Settings, 'damping_beta'):g})", _LAW, {"type": float}, group="law", example="1e-3"),
+    Option(("--damping-xi",), f"or the joints' damping ratio at the rotational-impact frequency, 0-{MAX_DAMPING_XI:g}",
+           _LAW, {"type": float}, group="law", example="0.5"),
+    Option(("--joints",), "the reference study's joints of a catalogue specimen (k_n and beta_R of its Table 5.1)",
+           _LAW, {"choices": JOINT_SETS}, group="law", example=STUDY_JOINTS),
+    Option(("--workers",), "processes (default: all cores)", _on(
+           "map threshold fragility domain compare-shake compare-engines", tilt=(
+               lambda a: a.ensemble is not None, "it runs the realisations of an --ensemble N"),
+           assess=(lambda a: bool(a.records), "it runs the --records"), campaign=_SWEEPS),
+           {"type": workers_option}, {"compare-engines": {"help": "processes (default {default})"}}, example="2"),
+    Option(("--scheduler",), "Dask scheduler address tcp://HOST:PORT (instead of local workers)",
+           _on("map threshold fragility compare-shake", domain=(
+               _dem, "it runs the DEM's domain (--engine dem); the analytic one runs here"), campaign=_SWEEPS),
+           example="tcp://127.0.0.1:8786"),
+    Option(("--out",), "new study file (default: a new one under runs/)", _on(
+           "map fragility compare-shake tilt shake mesh draw campaign calibrate animate"), {"metavar": "STUDY.h5"},
+           {"tilt": {"metavar": None, "help": "directory for the result file (default {default})"},
+            "shake": {"metavar": None, "help": "directory for the run file (default {default})"},
+            "campaign": {"metavar": None, "help": "output directory (resumed if it exists)"},
+            "mesh": {"metavar": None, "required": True, "help": "output directory"},
+            "draw": {"metavar": None, "required": True, "help": "output image (.png/.pdf/.svg)"},
+            "animate": {"metavar": None, "required": True, "help": "FILE.gif or FILE.mp4 (never overwritten)"},
+            "calibrate": {"metavar": None, "help": "where to store the calibration (default {default}, read by "
+                                                   "--contact calibrated)"}}, example="out.h5"),
+    Option(("--resume",), "continue an interrupted study", _on("map fragility compare-shake"), {"metavar": "STUDY.h5"},
+           example="s.h5"),
+    Option(("--plot",), "figure file (.png/.pdf/.svg)", _on("tilt shake fragility modes domain rock compare-engines map",
+           analytic=(lambda a: not _arch_given(a), "it writes the catalogue's figures; give it without an arch")),
+           per={"analytic": {"metavar": "DIR", "help": "write the catalogue / full-scale figures to DIR (no arch)"},
+                "map": {"metavar": "DIR", "help": "write the map figures (PNG) into DIR"}}, example="f.png"),
+    Option(("--json",), "print one JSON object", _on("tilt shake threshold analytic domain rock map fragility modes "
+           "assess compare-engines compare-shake record calibrate specimens"), {"action": "store_true"},
+           {"specimens": {"help": "print a JSON list"}}, example=None),
+)
+#: The table by destination.
+TABLE: dict[str, Option] = {o.dest: o for o in OPTIONS}
+#: The options of an arch: its id or parameters, piers, drawing and contact.
+ARCH_OPTIONS = tuple(o.dest for o in OPTIONS if o.group in ("arch", "piers", "drawing") or o.dest in ("id", "contact"))
+_GROUPS = {"arch": f"arch by parameters (instead of an id; SI units, m; lengths {MIN_LENGTH_M:g} to {MAX_LENGTH_M:g} m)",
+           "piers": "piers (the arch on two equal piers instead of the rigid base; lengths in m)",
+           "drawing": "a structure from a drawing instead (docs/physics/geometry.md#16-assemblies-from-drawings)",
+           "law": "the joints' contact law"}
+
+
+def options_of(command: str) -> list[Option]:
+    """The table's options of ``command``, in the table's order."""
+    return [o for o in OPTIONS if command in o.where]
+
+
+def add_options(p: argparse.ArgumentParser, command: str, *dests: str, **defaults: Any) -> None:
+    """Add the table's options of ``command`` to ``p`` (only ``dests`` when given); ``defaults``: a
+    default by destination from the command's own library object (its experiment's function)."""
+    groups: dict[str, Any] = {}
+    for o in options_of(command):
+        if dests and o.dest not in dests:
+            continue
+        kw = {"default": None, **o.kw, **o.per.get(command, {})}
+        kw["default"] = defaults.get(o.dest, kw["default"])
+        if "{default" in (text := kw.get("help", o.help)):
+            text = text.format(default=kw["default"])
+        kw["help"] = text
+        if kw.get("action") == "store_true" or o.flags == ("id",):
+            kw.pop("default")
+        if o.group and o.group not in groups:
+            groups[o.group] = p.add_argument_group(_GROUPS[o.group])
+        groups.get(o.group, p).add_argument(*o.flags, **kw)
+
+
+def refuse_unused(args: argparse.Namespace) -> None:
+    """The table's rule: an option given by hand where its condition does not hold is refused in one
+    line naming the option and what it belongs to."""
+    mine = given(args)
+    for o in options_of(getattr(args, "command", "")):
+        cond, why = o.where[args.command]
+        if cond is not None and o.dest in mine:
+            option_used(args, o.dest, cond(args), why)

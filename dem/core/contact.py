@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from dem.core.model import Model
-from dem.core.settings import Settings
+from dem.core.settings import MAX_DAMPING_XI, Settings
 from specimens.catalogue import STUDY_JOINTS
 from foundation.errors import ArchdemInputError
 
@@ -22,10 +22,10 @@ from foundation.errors import ArchdemInputError
 POINTS_PER_JOINT = 4
 
 
-def hull_offset(settings: Settings) -> float:
-    """Outward offset of the collision hulls [m]: ``settings.inflate``, so that rigid faces touch at step 0;
-    none on compliant joints, whose springs start unloaded at the drawn blocks (1 µm preloads each by 2 µm)."""
-    return 0.0 if settings.contact_law == "compliant" else settings.inflate
+def hull_offset(settings: Settings, inflate: float) -> float:
+    """Outward offset of the collision hulls [m]: the engine's ``inflate`` option [m], so that rigid faces touch at
+    step 0; none on compliant joints, whose springs start unloaded at the drawn blocks (1 µm preloads each by 2 µm)."""
+    return 0.0 if settings.contact_law == "compliant" else inflate
 
 
 def joint_width(model: Model, joint) -> float:
@@ -88,7 +88,14 @@ def rayleigh_beta(settings: Settings, model: Model) -> float:
     (a damping ratio ``xi`` at ``omega_r``: ``xi(omega) = beta_R omega / 2``)."""
     if settings.damping_xi:
         return 2.0 * settings.damping_xi / rotational_impact_frequency(model, normal_stiffness(settings, model))
-    return float(settings.damping_beta)
+    beta = float(settings.damping_beta)
+    # a beta_R far above critical glues the joints: every tilt level holds and the search ran out of levels
+    xi = 0.5 * beta * rotational_impact_frequency(model, normal_stiffness(settings, model)) if beta else 0.0
+    if xi > MAX_DAMPING_XI:
+        raise ArchdemInputError(f"damping beta_R = {beta:g} s is a damping ratio xi = {xi:.3g} at the joints' "
+                                f"rotational-impact frequency, outside 0-{MAX_DAMPING_XI:g}; give a smaller "
+                                "--damping-beta or the ratio as --damping-xi")
+    return beta
 
 
 def body_point_stiffness(model: Model, kn: float) -> tuple[np.ndarray, float]:

@@ -110,6 +110,11 @@ class Model:
         raise KeyError(name)
 
 
+def is_relieved(model: Model) -> bool:
+    """True if the model's joints touch on part of their depth (effective contact or bands)."""
+    return float(model.source.get("contact", 1.0)) < 1.0 or bool(model.source.get("bands"))
+
+
 def _base_pads(xmin: float, xmax: float, depth: float, margin: float, top: float = 0.0) -> np.ndarray:
     return np.array([[xmin - margin, top - depth], [xmax + margin, top - depth], [xmax + margin, top],
                      [xmin - margin, top]])

@@ -6,6 +6,7 @@ import sys
 from importlib.metadata import PackageNotFoundError, version
 
 from dem.core.engines import engine_package, get_engine
+from dem.core.engines.options import EngineOptions
 
 
 def package_version(name: str) -> str:
@@ -47,9 +48,10 @@ def provenance(extra: tuple[str, ...] = ()) -> dict[str, str]:
     return out
 
 
-def run_provenance(engine: str) -> dict:
-    """:func:`provenance` plus the engine's own description (name, version, engine options)."""
-    eng = get_engine(engine)
+def run_provenance(engine: str, options: EngineOptions | None = None) -> dict:
+    """:func:`provenance` plus the engine's own description: name, version and the ``options`` it ran with
+    (``Settings.engine_options``; None: the engine's defaults)."""
+    eng = get_engine(engine, options)
     try:
         return {**provenance(), **eng.versions()}
     finally:

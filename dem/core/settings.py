@@ -2,14 +2,17 @@
 
 Every field has a default that passes the validation against exact limit analysis
 (``benchmarks/validate_dem.py``; its figures with these defaults are in docs/validation.md, the
-measurements behind the engine settings in docs/decisions/006-solver-settings.md). The object is
-stored in every result file.
+measurements behind the engine settings in docs/decisions/006-solver-settings.md). Nothing in it is
+one engine's own: those options sit in ``engine_options``, one frozen object per engine
+(:mod:`dem.core.engines.options`). The object, with the options of its engine, is stored in every
+result file.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass, fields, replace
 
+from dem.core.engines.options import EngineOptions, engine_options, legacy_options
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
 from foundation.errors import ArchdemInputError
 
@@ -41,22 +44,13 @@ class Settings:
     g: float = G  # gravity magnitude [m/s^2]; the tilt rotates it at constant magnitude
     planar: bool = False  # True: out-of-plane velocities zeroed after every step (2D comparison)
 
-    # engine and solver: 0.5 ms / 100 iterations is the cheapest pair that keeps the no-sliding lambda
-    # within 3 % of the LP and the hinge layouts (docs/decisions/006-solver-settings.md)
+    # engine and step: 0.5 ms with PyBullet's 100 iterations is the cheapest pair that keeps the no-sliding
+    # lambda within 3 % of the LP and the hinge layouts (docs/decisions/006-solver-settings.md)
     engine: str = "pybullet"  # the tilt's and the statics'; shakes default to DYNAMICS_ENGINE (dynamics_settings)
     dt: float = 5e-4  # [s]; the no-sliding lambda bias shrinks with dt
-    solver_iterations: int = 100  # per step; 0.5 ms / 100 costs about what 1 ms / 200 did per simulated second
-
-    # contacts (PyBullet; its defaults creep or sink at rest)
-    contact_slop: float = 0.0  # PyBullet default 1e-5 m sinks every joint 10 um (~0.1 mm crown drop)
-    warm_starting: float = 1.0  # PyBullet default 0.1 creeps; 1.0 lets contact impulses persist at rest
-    friction_anchor: bool = True  # anchors static friction: no creep of blocks at rest
-    sat_features: bool = True  # polyhedral contact (4 points per face) instead of a ~1 mm hull margin
-
-    inflate: float = 1e-6  # hulls offset outward [m] so touching faces are in contact at step 0 (rigid joints only)
-    inflate_normal: bool = False  # False: vertices pushed radially from the piece centroid; True: along face normals (drifts)
-    contact_erp: float = 0.2  # PyBullet default; 0.5-0.8 made the rest drift worse (docs/decisions/006-solver-settings.md#contacts)
-    friction_erp: float = 1.0  # friction drift correction; lower values let blocks near the friction limit creep
+    # the engine's own solver and contact options (dem.core.engines.options; a dict of their fields is read
+    # too); None: the engine's defaults, which is what the field holds after construction
+    engine_options: EngineOptions | None = None
 
     # joints: "rigid" is as stiff as each engine's solver makes it (the validated default); "compliant" puts
     # springs and dashpots of these per-unit-area values at the engines' contact points (dem.core.contact)
@@ -76,6 +70,8 @@ class Settings:
     collapse_confirm: float | None = None  # arches come back: confirm at this x size (docs/decisions/012-collapse-confirmed.md)
 
     def __post_init__(self) -> None:
+        # resolved once here, so that equal settings compare equal and result files store what ran
+        object.__setattr__(self, "engine_options", engine_options(self.engine, self.engine_options))
         pos = {"mu_joint": self.mu_joint, "mu_base": self.mu_base, "g": self.g, "dt": self.dt,
                "collapse_fraction": self.collapse_fraction, "record_every": self.record_every}
         for k, v in pos.items():
@@ -83,8 +79,6 @@ class Settings:
                 raise ArchdemInputError(f"setting {k} must be a positive number, got {v!r}")
         if not (0.0 <= self.restitution <= 1.0):
             raise ArchdemInputError(f"restitution must be in [0, 1], got {self.restitution!r}")
-        if not (isinstance(self.solver_iterations, int) and self.solver_iterations >= 1):
-            raise ArchdemInputError(f"solver iterations must be an integer >= 1, got {self.solver_iterations!r}")
         if self.record_every < self.dt:
             raise ArchdemInputError(f"record interval {self.record_every:g} s is shorter than dt {self.dt:g} s")
         if self.dt > 0.01:
@@ -133,35 +127,49 @@ class Settings:
         return max(1, int(round(self.record_every / self.dt)))
 
     def to_dict(self) -> dict:
+        """The settings as JSON values, the engine's options (all of them) under ``engine_options``."""
         d = asdict(self)
         d["mode_window"] = list(self.mode_window)
+        d["engine_options"] = self.engine_options.to_dict()
         return d
 
     @classmethod
     def from_dict(cls, d: dict) -> "Settings":
+        """The settings :meth:`to_dict` wrote; a file written before the engine options keeps PyBullet's as
+        flat keys, which are read into ``engine_options`` (:func:`dem.core.engines.options.legacy_options`)."""
+        d = dict(d)
+        engine = d.get("engine", cls.engine)
+        engine = engine.decode() if isinstance(engine, bytes) else engine
+        old = legacy_options(engine, d)
         names = {f.name for f in fields(cls)}
         kw = {k: v for k, v in d.items() if k in names}
         if "mode_window" in kw:
             kw["mode_window"] = tuple(float(x) for x in kw["mode_window"])
-        for k in ("planar", "friction_anchor", "sat_features", "inflate_normal"):
-            if k in kw:
-                kw[k] = bool(kw[k])
-        if "solver_iterations" in kw:
-            kw["solver_iterations"] = int(kw["solver_iterations"])
+        if "planar" in kw:
+            kw["planar"] = bool(kw["planar"])
         for k in ("engine", "contact_law"):
             if k in kw and isinstance(kw[k], bytes):
                 kw[k] = kw[k].decode()
+        if kw.get("engine_options") is None and old:
+            kw["engine_options"] = old
         return cls(**kw)
 
     def with_(self, **kw) -> "Settings":
+        """These settings with the fields of ``kw``; another engine without its options gets its defaults."""
+        if kw.get("engine", self.engine) != self.engine and "engine_options" not in kw:
+            kw["engine_options"] = None
         return replace(self, **kw)
 
 
 def dynamics_settings(**kw) -> Settings:
     """:class:`Settings` of a dynamic experiment: ``kw`` over the defaults, the engine
     :data:`DYNAMICS_ENGINE` unless ``kw`` names one, which then runs at :data:`DYNAMICS_DT` unless
-    ``kw`` gives ``dt``."""
+    ``kw`` gives ``dt``. Study files written before the engine options keep PyBullet's options as
+    flat keys of ``kw``: they are read into ``engine_options``."""
     kw = {"engine": DYNAMICS_ENGINE, **kw}
+    old = legacy_options(kw["engine"], kw)
+    if old and kw.get("engine_options") is None:
+        kw["engine_options"] = old
     if kw["engine"] == DYNAMICS_ENGINE and kw.get("dt") is None:
         kw["dt"] = DYNAMICS_DT
     return Settings(**kw)

@@ -111,7 +111,8 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     a firing is the collapse; otherwise the run goes on and the collapse is confirmed once a point
     moved more than ``collapse_confirm x size``, or when the run ends (at rest or at ``duration``)
     still in an excursion past the criterion; ``t_collapse`` is then where that excursion passed
-    it, ``t_confirm`` where it was confirmed. ``engine``: an unbuilt backend (default: ``settings.engine``).
+    it, ``t_confirm`` where it was confirmed. ``engine``: an unbuilt backend (default: ``settings.engine``
+    with ``settings.engine_options``; one with other options is refused).
     ``rest = (t_from, window, growth)`` [s, s, m]: from ``t_from`` on, end the run (not collapsed,
     ``t_rest`` set) at the first record at which the largest displacement grew by less than
     ``growth`` over the last ``window`` (``rest_span``: varied by less than ``growth``, i.e. its
@@ -127,7 +128,10 @@ def simulate(model: Model, settings: Settings, load: Load, duration: float, reco
     if not (duration > 0 and math.isfinite(duration)):
         raise ArchdemInputError(f"simulation duration must be > 0 s, got {duration!r}")
     wall0 = time.perf_counter()
-    eng = engine if engine is not None else get_engine(settings.engine)
+    eng = engine if engine is not None else get_engine(settings.engine, settings.engine_options)
+    if getattr(eng, "options", settings.engine_options) != settings.engine_options:
+        raise ArchdemInputError(f"the {settings.engine} engine given runs other options than settings.engine_options: "
+                                "make it with get_engine(settings.engine, settings.engine_options)")
     rec = max(1, int(round((record_every or settings.record_every) / settings.dt)))
     n_steps = int(round(duration / settings.dt))
     tracker = detect.PointTracker(model)

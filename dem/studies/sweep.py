@@ -27,12 +27,19 @@ kill). Layout::
 ``<key>`` is :func:`case_key`: the first 16 hex digits of the SHA-256 of the case's
 canonical JSON (sorted keys), so the same parameters always map to the same group.
 
-Interruption and resume: Ctrl-C (``KeyboardInterrupt``) and a dead local worker
+Interruption and resume: the file, with its attributes and ``definition``, is made (whole, by a
+rename) before the first case runs (:func:`open_study`, for a command with work of its own before
+its cases); each finished case is in it once its group is closed. Ctrl-C (``KeyboardInterrupt``,
+and SIGTERM, which the ``archdem`` program raises as one) and a dead local worker
 (``BrokenProcessPool``, raised here as :class:`StudyInterrupted`) stop the study; every
 case finished before that point is already stored (finished results not yet collected are
 stored on the way out). Local pool workers ignore SIGINT and are terminated when the study
 stops, so they do not go on with queued cases; the cases that were running at that moment
-are lost and will run again. ``resume=True`` reopens the file, checks that its case
+are lost and will run again. Each case is written into a spare copy beside the file
+(:func:`spare_path`, removed when the run ends) before the file itself: a SIGKILL in the middle of
+an HDF5 write can leave that file unreadable, and a resume then takes the other, whole one
+(:func:`_recover`). A SIGKILL leaves the cases stored before it (and the lock file, which locks
+nothing: the next writer takes it). ``resume=True`` reopens the file, checks that its case
 function, study attributes and seed are the ones given (else :class:`ArchdemInputError`),
 skips the cases stored with status ``ok`` and **re-runs the failed ones** (a failure may be
 transient: a killed worker, a full disk; a deterministic failure simply fails again and is
@@ -57,11 +64,12 @@ import json
 import math
 import multiprocessing
 import os
+import shutil
 import socket
 import sys
+import threading
 import time
 import traceback
-from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures import as_completed as pool_as_completed
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
@@ -77,7 +85,7 @@ from dem.core.progress import Progress, TerminalLine, terminal
 from dem.core.provenance import provenance
 from foundation.errors import ArchdemInputError
 from foundation.io import atomic_path, exclusive, json_default, writable_dir
-from foundation.processes import die_with_parent, pool_worker_init
+from foundation.processes import StoppablePool, pool_worker_init, raise_if_stopped, stop_pool, worker_pool
 
 LAYOUT_VERSION = 1
 
@@ -237,29 +245,100 @@ def _write_case(path: Path, key: str, case: dict, out: dict) -> CaseRecord:
     """Store one finished case (replacing an earlier failed entry) and close the file."""
     rec = CaseRecord(key, case, out["status"], out["results"], out["error"], float(out["wall"]),
                      out.get("worker", ""), _now())
-    with h5py.File(path, "a") as f:
-        cases = f.require_group("cases")
-        if key in cases:
-            del cases[key]
-        g = cases.create_group(key)
-        g.attrs["params"] = canonical_json(case)
-        g.attrs["error"] = rec.error
-        g.attrs["wall"] = rec.wall
-        g.attrs["worker"] = rec.worker
-        g.attrs["finished"] = rec.finished
-        res = g.create_group("results")
-        try:
-            for k, v in rec.results.items():
-                _write_value(res, str(k), v)
-        except (TypeError, ValueError) as exc:  # an unstorable result makes the case failed
-            del g["results"]
-            g.create_group("results")
-            rec.status, rec.results = "failed", {}
-            rec.error = f"results could not be stored: {exc}"
-            g.attrs["error"] = rec.error
-        g.attrs["status"] = rec.status  # written last: a group without it is incomplete
-        f.flush()
+    _write_both(path, lambda f: _write_group(f, key, case, rec))
     return rec
+
+
+def _write_group(f, key: str, case: dict, rec: CaseRecord) -> None:
+    """One case's group in an open study file (replacing an earlier entry)."""
+    cases = f.require_group("cases")
+    if key in cases:
+        del cases[key]
+    g = cases.create_group(key)
+    g.attrs["params"] = canonical_json(case)
+    g.attrs["error"] = rec.error
+    g.attrs["wall"] = rec.wall
+    g.attrs["worker"] = rec.worker
+    g.attrs["finished"] = rec.finished
+    res = g.create_group("results")
+    try:
+        for k, v in rec.results.items():
+            _write_value(res, str(k), v)
+    except (TypeError, ValueError) as exc:  # an unstorable result makes the case failed
+        del g["results"]
+        g.create_group("results")
+        rec.status, rec.results = "failed", {}
+        rec.error = f"results could not be stored: {exc}"
+        g.attrs["error"] = rec.error
+    g.attrs["status"] = rec.status  # written last: a group without it is incomplete
+
+
+#: How long the writer waits for a reader that holds the study file open (HDF5 locks it) [s].
+BUSY_WAIT_S = 30.0
+
+
+def _h5_append(path: Path):
+    """The study file opened for writing; a reader holding it open (HDF5's file lock: a progress
+    watcher, ``h5ls``) is waited for, up to ``BUSY_WAIT_S``, instead of failing the study."""
+    t0 = time.monotonic()
+    while True:
+        try:
+            return h5py.File(path, "a")
+        except BlockingIOError:
+            if time.monotonic() - t0 > BUSY_WAIT_S:
+                raise
+            time.sleep(0.05)
+
+
+def spare_path(study: str | os.PathLike) -> Path:
+    """The spare copy kept beside a study file while a study writes into it (removed at the end)."""
+    study = Path(study)
+    return study.with_name(f".{study.name}.spare")
+
+
+def _write_both(path: Path, write: Callable) -> None:
+    """``write(h5 file)`` into the spare copy, then into the study file: a SIGKILL in the middle of
+    an HDF5 write can leave that file unreadable, and then the other one is whole (:func:`_recover`)."""
+    spare = spare_path(path)
+    if not spare.exists():
+        with atomic_path(spare) as tmp:
+            shutil.copyfile(path, tmp)
+    for target in (spare, path):
+        with _h5_append(target) as f:
+            write(f)
+
+
+def _readable(path: Path) -> bool:
+    """Whether a study file opens and every attribute and value in it reads."""
+    try:
+        with h5py.File(path, "r") as f:
+            if "archdem_study" not in f.attrs:
+                return False
+            _read_attrs(f)
+
+            def read(name, obj) -> None:
+                dict(obj.attrs)
+                if isinstance(obj, h5py.Dataset):
+                    obj[()]
+
+            f.visititems(read)
+        return True
+    except Exception:  # noqa: BLE001 - whatever HDF5 says of a damaged file
+        return False
+
+
+def _recover(path: Path) -> None:
+    """After a SIGKILL: keep the study file if it reads, else its spare copy, which then holds every
+    case the file held (and maybe the one being written). Call it holding the study's lock."""
+    spare = spare_path(path)
+    if not spare.exists():
+        return
+    if not path.exists() or _readable(path):
+        spare.unlink()
+    elif _readable(spare):
+        os.replace(spare, path)
+    else:
+        raise ArchdemInputError(f"{path} is damaged and so is its spare copy {spare.name}; it cannot be resumed")
 
 
 def _read_attrs(f) -> dict:
@@ -268,7 +347,7 @@ def _read_attrs(f) -> dict:
         if k in f.attrs:
             v = f.attrs[k]
             out[k] = v.item() if hasattr(v, "item") else v
-    for k in ("study_attrs", "seed", "versions"):
+    for k in ("study_attrs", "seed", "versions", "notes"):
         if k in f.attrs:
             out[k] = json.loads(f.attrs[k])
     return out
@@ -305,7 +384,11 @@ def load_study(path: str | os.PathLike, cases: Sequence[dict] | None = None) -> 
 
 
 def stored_definition(path: str | os.PathLike) -> dict | None:
-    """The ``definition`` a study file was made with (None for a study made without one)."""
+    """The ``definition`` a study file was made with (None for a study made without one); that of its
+    spare copy if a SIGKILL left the file itself unreadable (:func:`_recover` puts it back on resume)."""
+    spare = spare_path(path)
+    if spare.exists() and not _readable(Path(path)) and _readable(spare):
+        path = spare
     try:
         with h5py.File(path, "r") as f:
             if "archdem_study" not in f.attrs:
@@ -317,11 +400,46 @@ def stored_definition(path: str | os.PathLike) -> dict | None:
     return None if text is None else json.loads(text)
 
 
+def store_note(path: str | os.PathLike, name: str, value: Any) -> None:
+    """Keep ``value`` (JSON) under ``name`` in a study file: work a study does besides its cases (a
+    command's reference runs), kept so that a resume does not do it again. Call it holding the
+    study's lock (:func:`study_lock`)."""
+    text = json.dumps(value, default=json_default)  # a NaN threshold is a result, not an error
+
+    def write(f) -> None:
+        notes = json.loads(f.attrs.get("notes", "{}"))
+        notes[name] = json.loads(text)
+        f.attrs["notes"] = json.dumps(notes, sort_keys=True, default=json_default)
+
+    _write_both(Path(path), write)
+
+
+def stored_note(path: str | os.PathLike, name: str) -> Any:
+    """The note ``name`` of a study file (:func:`store_note`), None if it has none."""
+    with h5py.File(path, "r") as f:
+        return json.loads(f.attrs.get("notes", "{}")).get(name)
+
+
+def open_study(path: str | os.PathLike, func: Callable[[dict], dict], study_attrs: dict | None = None,
+               seed: int | None = None, resume: bool = False, definition: dict | None = None) -> set[str]:
+    """Make a study file — its attributes and ``definition``, no case yet — or check it for resuming,
+    as :func:`run_study` does first; returns the keys stored with status ok. A command with work to do
+    before its cases calls it first (holding :func:`study_lock`), so that the file, with what a resume
+    needs, exists from the start. Raises :class:`ArchdemInputError` as :func:`run_study` does."""
+    path = Path(path)
+    if path.is_dir():
+        raise ArchdemInputError(f"{path} is a folder; a study is one .h5 file")
+    writable_dir(path.parent)
+    with study_lock(path):
+        return _open_study(path, function_name(func), dict(study_attrs or {}), seed, resume, definition)
+
+
 def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None, resume: bool,
                 definition: dict | None = None) -> set[str]:
     """Create the study file, or check it for resuming; return the keys stored with status ok."""
 
     params_json, seed_json = canonical_json(study_attrs), canonical_json(seed)
+    _recover(path)
     if path.exists():
         if not resume:
             raise ArchdemInputError(f"{path} exists; a study is never overwritten (resume it, or choose another file)")
@@ -339,7 +457,7 @@ def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None,
             if old != new:
                 raise ArchdemInputError(f"{path} holds a study with another {what} ({old} vs {new}); not resuming it")
         return done
-    with atomic_path(path) as tmp:
+    with atomic_path(path) as tmp:  # the whole header or no file: a stop here leaves nothing to resume
         with h5py.File(tmp, "w") as f:
             f.attrs["archdem_study"] = LAYOUT_VERSION
             f.attrs["case_function"] = func_name
@@ -357,8 +475,8 @@ def _open_study(path: Path, func_name: str, study_attrs: dict, seed: int | None,
 class _LocalPool:
     def __init__(self, workers: int):
 
-        self.ex = ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
-                                      initializer=pool_worker_init)
+        self.ex = StoppablePool(max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
+                                initializer=pool_worker_init)
 
     def submit(self, fn, *args):
         return self.ex.submit(fn, *args)
@@ -368,14 +486,7 @@ class _LocalPool:
 
     def close(self, cancel: bool) -> None:
         if cancel:
-            # stop the workers now: otherwise they would go on with the cases already queued
-            # to them, whose results nobody collects (ProcessPoolExecutor has no public API
-            # for this before Python 3.14)
-            procs = list((getattr(self.ex, "_processes", None) or {}).values())
-            self.ex.shutdown(wait=False, cancel_futures=True)
-            for p in procs:
-                if p.is_alive():
-                    p.terminate()
+            stop_pool(self.ex)  # now: its workers would go on with the cases queued to them
         else:
             self.ex.shutdown(wait=True)
 
@@ -438,7 +549,7 @@ def executor(workers: int, scheduler: str | None = None) -> Iterator[tuple[Any, 
             pool.close(True)
         return
 
-    with ProcessPoolExecutor(max_workers=workers, initializer=die_with_parent) as ex:
+    with worker_pool(workers) as ex:
         yield ex, workers
 
 
@@ -501,7 +612,7 @@ def run_studies(studies: Sequence[tuple], func: Callable[[dict], dict], workers:
         writable_dir(path.parent)
     with contextlib.ExitStack() as locks:
         for path, *_ in plan:  # every file is ours before any is made
-            locks.enter_context(exclusive(lock_path(path), f"the study file {path}", remove=True))
+            locks.enter_context(study_lock(path))
         todo = []
         for path, cases, keys, study_attrs, seed, definition in plan:
             done = _open_study(path, func_name, study_attrs, seed, resume, definition)
@@ -515,6 +626,33 @@ def lock_path(study: str | os.PathLike) -> Path:
     """The lock file held beside a study file while a study writes into it (removed at the end)."""
     study = Path(study)
     return study.with_name(f".{study.name}.lock")
+
+
+_held = threading.local()  # the study locks this thread holds (.counts: path -> times taken)
+
+
+@contextlib.contextmanager
+def study_lock(path: str | os.PathLike) -> Iterator[None]:
+    """Hold a study file's lock (:func:`lock_path`; another process is refused in one line) across
+    several calls: a command that works before and between its runs of the study keeps the file its
+    own throughout; the calls inside, :func:`run_study` among them, take it again at no cost."""
+    key, held = Path(os.path.abspath(path)), _held.__dict__.setdefault("counts", {})
+    if key in held:
+        held[key] += 1
+        try:
+            yield
+        finally:
+            held[key] -= 1
+        return
+    with exclusive(lock_path(path), f"the study file {path}", remove=True):
+        held[key] = 1
+        try:
+            yield
+        finally:
+            del held[key]
+            # every write is whole unless a SIGKILL cut it (then nothing runs here)
+            with contextlib.suppress(FileNotFoundError):
+                spare_path(path).unlink()
 
 
 def _execute(todo, func, workers, scheduler, progress) -> None:
@@ -567,6 +705,7 @@ def _execute(todo, func, workers, scheduler, progress) -> None:
                     raise
                 out = {"status": "failed", "results": {}, "error": msg, "wall": math.nan, "worker": ""}
             store(fut, out)
+            raise_if_stopped()  # an interrupt Python dropped (raised where it cannot propagate)
         cancel = False
     except BaseException:
         # interrupted: keep whatever finished but was not collected yet, then stop

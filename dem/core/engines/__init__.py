@@ -1,9 +1,11 @@
-"""Engine registry: ``get_engine(name)`` returns a new, unbuilt backend instance."""
+"""Engine registry: ``get_engine(name, options)`` returns a new, unbuilt backend instance with its options
+(:mod:`dem.core.engines.options`, light: no engine library is imported before a backend is asked for)."""
 from __future__ import annotations
 
 import importlib
 
 from dem.core.engines.base import Engine
+from dem.core.engines.options import EngineOptions, LMGC90Options, MuJoCoOptions, PyBulletOptions, engine_options
 from dem.core.extras import require
 from foundation.errors import ArchdemInputError
 
@@ -37,14 +39,18 @@ def check_engine(name: str) -> None:
         require(*_MODULES[name])
 
 
-def get_engine(name: str) -> Engine:
-    """A new backend instance of engine ``name`` (see :func:`available_engines`)."""
+def get_engine(name: str, options: EngineOptions | None = None) -> Engine:
+    """A new backend instance of engine ``name`` (see :func:`available_engines`) with ``options`` (its
+    options class of :mod:`dem.core.engines.options`; None: the engine's defaults). Another engine's
+    options are refused in one line."""
     if name not in _ENGINES:
         raise ArchdemInputError(f"unknown engine {name!r}; available: {', '.join(available_engines())}")
+    opts = engine_options(name, options)
     if name in _MODULES:
         require(*_MODULES[name])
     mod, cls = _ENGINES[name]
-    return getattr(importlib.import_module(mod), cls)()
+    return getattr(importlib.import_module(mod), cls)(opts)
 
 
-__all__ = ["Engine", "get_engine", "available_engines", "engine_installed"]
+__all__ = ["Engine", "EngineOptions", "PyBulletOptions", "MuJoCoOptions", "LMGC90Options", "get_engine",
+           "available_engines", "engine_installed"]

@@ -37,13 +37,13 @@ import math
 import pickle
 import subprocess
 import sys
-from dataclasses import dataclass, replace
 
 import numpy as np
 
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
-from dem.core.model import Model
+from dem.core.engines.options import LMGC90Options
+from dem.core.model import Model, is_relieved
 from dem.core.settings import Settings
 from foundation.errors import ArchdemInputError
 
@@ -51,23 +51,7 @@ from foundation.errors import ArchdemInputError
 M = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 
 
-@dataclass(frozen=True)
-class LMGC90Options:
-    """LMGC90's settable parameters (docs/engines.md#11-lmgc90)."""
-
-    max_dt: float = 2.5e-4  # [s] largest LMGC90 step (convergence study: docs/engines.md#11-lmgc90)
-    theta: float = 0.5  # theta of the Moreau-Jean integrator (0.5: midpoint; 1: implicit Euler)
-    alert: float = 1e-3  # [m] contact detection distance (the binding's default)
-    law: str = "IQS_CLB"  # inelastic shock + Coulomb: masonry's plastic impacts
-
-    def with_(self, **kw) -> "LMGC90Options":
-        return replace(self, **kw)
-
-    def to_dict(self) -> dict:
-        return {"max_dt": self.max_dt, "theta": self.theta, "alert": self.alert, "law": self.law,
-                "nlgs": "tolerance, norm and iterations fixed by compas_lmgc90 (not settable)"}
-
-
+#: The options an LMGC90 engine runs with unless given others.
 DEFAULT_OPTIONS = LMGC90Options()
 
 
@@ -123,8 +107,6 @@ def _polyhedron(poly: np.ndarray, width: float, z: float) -> tuple[np.ndarray, n
 
 def build_message(model: Model, settings: Settings, options: LMGC90Options) -> dict:
     """The worker's ``build`` message: the bodies (archdem's first, then the base pads as supports)."""
-    from dem.core.engines.pybullet_engine import is_relieved
-
     if settings.contact_law != "rigid":
         raise ArchdemInputError("the lmgc90 engine runs rigid joints only (contact law 'rigid'); compliant joints "
                                 "need a law and its parameters per contact pair, which compas_lmgc90 does not set")
@@ -286,7 +268,8 @@ class LMGC90Engine(Engine):
         from dem.core.provenance import package_version
 
         return {"engine": self.name, "compas_lmgc90": package_version("compas_lmgc90"),
-                "lmgc90_options": self.options.to_dict()}
+                "lmgc90_options": {**self.options.to_dict(),
+                                   "nlgs": "tolerance, norm and iterations fixed by compas_lmgc90 (not settable)"}}
 
     def close(self) -> None:
         p, self._proc = self._proc, None

@@ -7,7 +7,7 @@ The model is built in memory as an MJCF string from the engine-neutral :class:`d
   (or, with ``settings.planar``, two slides x, y and a hinge z: an exact planar constraint),
   an explicit ``<inertial>`` with the mass and the full centroidal inertia tensor;
 * one convex mesh geom per convex piece (inline vertices of the prism, offset outward by
-  ``settings.inflate`` as for PyBullet so that touching faces are in contact at step 0; on compliant
+  ``MuJoCoOptions.inflate`` as for PyBullet so that touching faces are in contact at step 0; on compliant
   joints not offset, the joints' springs on small spheres at their corners, ``_corner_spheres``); the
   base pads are static geoms of the world body, or, with a driven base (shake table), geoms of
   a body 10^6 times heavier than the arch on a horizontal slide joint whose velocity is set
@@ -20,16 +20,16 @@ The model is built in memory as an MJCF string from the engine-neutral :class:`d
   elliptic cone, Newton solver, ``implicitfast`` integrator, multi-point convex collision
   (``multiccd``, on by default in 4.x) so a face-face contact gets several points.
 
-Options (:class:`MuJoCoOptions`; why: docs/engines.md#3-mujoco-settings): MuJoCo's default contacts
-are soft enough that an arch sinks at rest, hence a stiff ``solref``/``solimp`` and no-slip
-iterations. ``step(n)`` advances ``n * settings.dt`` in ``ceil(settings.dt / max_dt)`` equal
-sub-steps per step, so protocols written for ``settings.dt`` are unchanged and a smaller
-``settings.dt`` refines MuJoCo's step too.
+Options (:class:`dem.core.engines.options.MuJoCoOptions`, given to :func:`dem.core.engines.get_engine`;
+why: docs/engines.md#3-mujoco-settings): MuJoCo's default contacts are soft enough that an arch sinks
+at rest, hence a stiff ``solref``/``solimp`` and no-slip iterations. ``step(n)`` advances
+``n * settings.dt`` in ``ceil(settings.dt / max_dt)`` equal sub-steps per step, so protocols written
+for ``settings.dt`` are unchanged and a smaller ``settings.dt`` refines MuJoCo's step too.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -43,45 +43,13 @@ from dem.core.contact import (
 )
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import accel, on_grid, significant
+from dem.core.engines.options import MuJoCoOptions
 from dem.core.model import Model
 from dem.core.settings import Settings
 from dem.core.ties import TieForces
+from foundation.errors import ArchdemInputError
 
-
-@dataclass(frozen=True)
-class MuJoCoOptions:
-    """MuJoCo-specific solver and contact parameters (docs/engines.md#3-mujoco-settings)."""
-
-    max_dt: float = 2.5e-4  # [s] largest internal step: 0.5 ms is not converged with friction, 1 ms breaks
-    #   solref (tc >= 2 dt) (docs/decisions/006-solver-settings.md#mujoco-internal-step)
-    solref: tuple[float, float] = (0.001, 1.0)  # contact time constant [s], damping ratio; 0.02 collapses at rest
-    solimp: tuple[float, float, float] = (0.99, 0.999, 0.0001)  # impedance near 1: stiff, little penetration
-    noslip_iterations: int = 10  # post-solve no-slip pass; removes creep of blocks under static friction
-    iterations: int = 100  # Newton iterations (converges in a few; MuJoCo default)
-    tolerance: float = 1e-10  # solver tolerance (MuJoCo default 1e-8)
-    condim: int = 3
-    cone: str = "elliptic"
-    solver: str = "Newton"
-    integrator: str = "implicitfast"
-    margin: float = 0.0  # [m] contact margin; inflated hulls already touch at step 0
-    compliant_impedance: float = 0.001  # impedance d of compliant joints: small d makes MuJoCo's contact a
-    #   spring of stiffness -solref[0] / ((1 - d) A) (A: the pair's inverse mass); 0.01 put a block's frequencies 1-2 % low
-    compliant_impratio: float = 1e4  # friction-to-normal impedance ratio with compliant joints: friction rows
-    #   nearly hard (R 0.1 A) while the normal ones are soft (R 999 A)
-    extra: dict = field(default_factory=dict)  # other <option> attributes, verbatim
-
-    def with_(self, **kw) -> "MuJoCoOptions":
-        return replace(self, **kw)
-
-    def to_dict(self) -> dict:
-        return {"max_dt": self.max_dt, "solref": list(self.solref), "solimp": list(self.solimp),
-                "noslip_iterations": self.noslip_iterations, "iterations": self.iterations,
-                "tolerance": self.tolerance, "condim": self.condim, "cone": self.cone, "solver": self.solver,
-                "integrator": self.integrator, "margin": self.margin,
-                "compliant_impedance": self.compliant_impedance, "compliant_impratio": self.compliant_impratio,
-                **self.extra}
-
-
+#: The options a MuJoCo engine runs with unless given others.
 DEFAULT_OPTIONS = MuJoCoOptions()
 
 
@@ -123,7 +91,7 @@ def mjcf(model: Model, settings: Settings, options: MuJoCoOptions = DEFAULT_OPTI
     spheres = _corner_spheres(model) if compliant else []
 
     def mesh(name: str, poly, width: float, z: float, c: np.ndarray) -> None:
-        m = prism(poly, width, hull_offset(settings))
+        m = prism(poly, width, hull_offset(settings, o.inflate))
         v = np.asarray(m.vertices, float).copy()
         v[:, 2] += z
         assets.append(f'<mesh name="{name}" vertex="{_f(on_grid(v - c))}"/>')
@@ -250,6 +218,9 @@ class MuJoCoEngine(Engine):
 
         if self._m is not None:
             raise RuntimeError("engine already built")
+        if settings.restitution != 0:  # its soft contacts have no restitution coefficient: refused, not dropped
+            raise ArchdemInputError("the mujoco engine runs plastic impacts only (restitution 0); restitution > 0 "
+                                    "runs on pybullet")
         self._mj = mujoco
         self.model, self.settings = model, settings
         self._m = mujoco.MjModel.from_xml_string(mjcf(model, settings, self.options, driven_base))

@@ -6,7 +6,7 @@ docs/decisions/006-solver-settings.md):
 * every convex piece is a mesh shape loaded from its own OBJ file (unique temporary directory
   per instance) with ``URDF_INITIALIZE_SAT_FEATURES`` so that face-face contacts get polyhedral
   clipping (4 points per face, no ~1 mm hull margin), hulls offset outward by
-  ``settings.inflate``; bodies of several pieces are compound shapes;
+  ``PyBulletOptions.inflate``; bodies of several pieces are compound shapes;
 * body frame = principal frame at the centroid, mass and principal moments always passed
   together; linear/angular damping 0 (Bullet's default damping 0.04 is not physical here);
 * Bullet combines the friction of a contact pair as the *product* of the two bodies'
@@ -30,6 +30,9 @@ docs/decisions/006-solver-settings.md):
 * planar option: after every step the out-of-plane velocity components (v_z, w_x, w_y) are
   zeroed and the pose is projected back on the plane (PyBullet has no planar constraint
   for free bodies).
+
+The solver and contact parameters are :class:`dem.core.engines.options.PyBulletOptions`, given to
+:func:`dem.core.engines.get_engine` (``Settings.engine_options``).
 """
 from __future__ import annotations
 
@@ -47,7 +50,8 @@ from scipy.spatial.transform import Rotation
 from dem.core.contact import body_point_stiffness, hull_offset, normal_stiffness, rayleigh_beta
 from dem.core.engines.base import Contacts, Engine
 from dem.core.engines.inputs import QUAT_GRID, accel, on_grid, principal_frame, significant
-from dem.core.model import Model
+from dem.core.engines.options import PyBulletOptions
+from dem.core.model import Model, is_relieved
 from dem.core.provenance import package_version
 from dem.core.settings import Settings
 from dem.core.ties import TieForces
@@ -124,11 +128,6 @@ def _clip(poly: np.ndarray, p0: np.ndarray, n_in: np.ndarray, h: float) -> np.nd
         if (fa >= 0) != (fb >= 0):
             out.append(a + (b - a) * (fa / (fa - fb)))
     return np.array(out)
-
-
-def is_relieved(model: Model) -> bool:
-    """True if the model's joints touch on part of their depth (effective contact or bands)."""
-    return float(model.source.get("contact", 1.0)) < 1.0 or bool(model.source.get("bands"))
 
 
 def _on_box_corners(piece: np.ndarray, ends: np.ndarray, R: np.ndarray, c: np.ndarray) -> bool:
@@ -226,7 +225,8 @@ def _import_pybullet():
 class PyBulletEngine(Engine):
     name = "pybullet"
 
-    def __init__(self) -> None:
+    def __init__(self, options: PyBulletOptions | None = None) -> None:
+        self.options = options or PyBulletOptions()
         self._p = None
         self._tmp: Path | None = None
 
@@ -239,18 +239,19 @@ class PyBulletEngine(Engine):
         self._p = p = _quiet(lambda: BulletClient(connection_mode=pb.DIRECT))
         self._tmp = mesh_dir()
         self.model, self.settings = model, settings
+        opt = self.options
         p.setPhysicsEngineParameter(
-            fixedTimeStep=settings.dt, numSolverIterations=settings.solver_iterations, numSubSteps=0,
-            contactSlop=settings.contact_slop, warmStartingFactor=settings.warm_starting,
-            contactERP=settings.contact_erp, frictionERP=settings.friction_erp, deterministicOverlappingPairs=1,
+            fixedTimeStep=settings.dt, numSolverIterations=opt.solver_iterations, numSubSteps=0,
+            contactSlop=opt.contact_slop, warmStartingFactor=opt.warm_starting,
+            contactERP=opt.contact_erp, frictionERP=opt.friction_erp, deterministicOverlappingPairs=1,
             restitutionVelocityThreshold=0.0 if settings.restitution > 0 else 0.2,
         )
         p.setGravity(0.0, -settings.g, 0.0)
-        flags = pb.URDF_INITIALIZE_SAT_FEATURES if settings.sat_features else 0
+        flags = pb.URDF_INITIALIZE_SAT_FEATURES if opt.sat_features else 0
         f_block = math.sqrt(settings.mu_joint)
         f_base = settings.mu_base / f_block
         n_files = [0]
-        inflate = hull_offset(settings)
+        inflate = hull_offset(settings, opt.inflate)
 
         def shape(polys, width, R, c, z_off):
             files, frames = [], []
@@ -269,7 +270,7 @@ class PyBulletEngine(Engine):
                     frames.append(([float(x) for x in on_grid((np.array([o[0], o[1], z_off]) - c) @ R)],
                                    tuple(float(x) for x in on_grid(_rot_to_quat(R.T @ Rz), QUAT_GRID))))
                 else:
-                    if settings.inflate_normal:
+                    if opt.inflate_normal:
                         m = prism(offset_polygon(poly, inflate), width + 2 * inflate)
                     else:
                         m = prism(poly, width, inflate)
@@ -296,7 +297,7 @@ class PyBulletEngine(Engine):
         self._gravity = np.array([0.0, -settings.g, 0.0])
         self._base = p.createMultiBody(baseMass=self._base_mass, baseCollisionShapeIndex=bshape)
         p.changeDynamics(self._base, -1, lateralFriction=f_base, restitution=settings.restitution,
-                         rollingFriction=0.0, spinningFriction=0.0, frictionAnchor=int(settings.friction_anchor))
+                         rollingFriction=0.0, spinningFriction=0.0, frictionAnchor=int(opt.friction_anchor))
         if driven_base:
             p.changeDynamics(self._base, -1, linearDamping=0.0, angularDamping=0.0,
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
@@ -314,7 +315,7 @@ class PyBulletEngine(Engine):
             p.changeDynamics(bid, -1, mass=mass, localInertiaDiagonal=[float(x) for x in I],
                              lateralFriction=f_block, restitution=settings.restitution,
                              rollingFriction=0.0, spinningFriction=0.0, linearDamping=0.0, angularDamping=0.0,
-                             frictionAnchor=int(settings.friction_anchor),
+                             frictionAnchor=int(opt.friction_anchor),
                              activationState=pb.ACTIVATION_STATE_DISABLE_SLEEPING)
             self._ids.append(bid)
             self._R0[k] = R
@@ -429,7 +430,8 @@ class PyBulletEngine(Engine):
 
     def versions(self) -> dict:
         return {"engine": self.name, "pybullet": package_version("pybullet"),
-                "pybullet_api": int(self._pb.getAPIVersion()) if self._p is not None else None}
+                "pybullet_api": int(self._pb.getAPIVersion()) if self._p is not None else None,
+                "pybullet_options": self.options.to_dict()}
 
     def close(self) -> None:
         if self._p is not None:

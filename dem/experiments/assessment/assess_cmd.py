@@ -6,28 +6,19 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.codes.assessment import (
-    assess,
-    assess_monument,
-    index_text,
-    monument_site,
-    monument_strips,
-    quantity_text,
-)
+from analytic.codes.assessment import assess, monument_site, monument_strips
 from analytic.codes.frp import ETA_A, GAMMA_F, GAMMA_FD, MASONRY_TYPES, BondFactors, Masonry, Strips, masonry_type
 from analytic.codes.kinematic import CONFIDENCE_FACTORS, Height
 from analytic.limit.ties import Tie
 from analytic.motions.spectra import EC8_GROUND, NTC_SOIL, NTC_TOPOGRAPHY, ec8, ntc2018, read_spectrum, rebuild
 from dem.common.options import (
-    add_arch_arguments,
-    add_engine_argument,
+    add_options,
     arch_from_args,
     default_of,
     discretisation_kwargs,
     option_used,
     parse_grid,
     print_json,
-    workers_option,
 )
 from dem.core.settings import dynamics_settings
 from specimens.constants import G
@@ -199,28 +190,6 @@ def _period_range(args: argparse.Namespace) -> tuple[float, float] | None:
     return rng[0], rng[1]
 
 
-def _strengthening(row: dict) -> str:
-    return "+".join(k for k, on in (("FRP", row.get("frp")), ("tie", row.get("tie"))) if on) or "none"
-
-
-def check_table(rows: list[dict], lead: list[tuple[str, int, list[str]]] | None = None) -> list[str]:
-    """The terminal table of :func:`analytic.codes.assessment.check_rows`: demand and capacity as the
-    clause compares them, the index (capacity / demand), the verdict and the clause; ``lead``: columns
-    before them, as (header, width, one value per row)."""
-    lead = lead or []
-    head = "".join(f"{h:{w}s} " for h, w, _ in lead)
-    out = [f"  {head}{'limit state / check':28s} {'demand':>32s} {'capacity':>34s} {'index':>7s}  {'verdict':12s}  clause"]
-    for k, r in enumerate(rows):
-        cols = "".join(f"{vals[k]:{w}s} " for _, w, vals in lead)
-        name = f"{r['limit_state']} {r['check']}" + ("" if r["code_check"] else " *")
-        out.append(f"  {cols}{name:28s} {r['demand_symbol'] + ' ' + quantity_text(r['demand'], r['unit']):>32s} "
-                   f"{r['capacity_symbol'] + ' ' + quantity_text(r['capacity'], r['unit']):>34s} "
-                   f"{index_text(r['safety_index']):>7s}  {r['verdict']:12s}  {r['clause']}")
-    if any(not r["code_check"] for r in rows):
-        out.append("  * the a0*/PGA convention of published tables: reported, not a code check, never governs")
-    return out
-
-
 def _check_report(args: argparse.Namespace) -> None:
     """Refuse a ``--report`` that is neither HTML nor PDF or would overwrite a file, and a title-block option
     without a PDF report, in one line."""
@@ -237,7 +206,7 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
     """A monument's configurations (:mod:`specimens.monuments`), unreinforced, with FRP strips and with
     ``--tie``, against its site (or the spectrum given), at ground level or at ``--z-ratio``."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.experiments.assessment.figure import hinges_text
+    from dem.experiments.assessment.run import MonumentSpec, run
 
     # its geometry is the reconstruction's and the records need one configuration (assess_with_records)
     given = [k for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs", "density", "pier_height", "contact",
@@ -258,78 +227,25 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
         bond = _bond(args, True, _named_masonry(args), "")
         strips = monument_strips(args.FC, args.frp_face, _masonry(args, bond), bond)
     _check_report(args)  # before the work: a bad report path must not cost the assessment
-    rows = assess_monument(monument, site, strips, args.FC, args.q, args.limit_state, height=height, tie=tie,
-                           sld_site=sld)
-    out = {"id": monument.name, "source": monument.source, "arch": {"e": monument.arch.e, "t": monument.arch.t,
-           "Rp": monument.arch.Rp, "width": monument.arch.width, "span": monument.arch.span,
-           "rise": monument.arch.rise},
-           "configurations": {k: (None if v is None else vars(v)) for k, v in monument.configurations.items()},
-           "density": monument.density, "spectrum": site.describe(),
-           "sld_spectrum": None if sld is None else sld.describe(),
-           "height": None if height is None else vars(height), "strips": strips.describe(monument.arch.width),
-           "tie": None if tie is None else tie.describe(), "rows": rows}
+    res = run(MonumentSpec(monument, strips, site, args.FC, args.q, args.limit_state, height, tie, sld))
+    out = res.describe()
     if args.report is not None:
-        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from dem.experiments.assessment.figure import write_report
-        from dem.experiments.assessment.report_pdf import monument_governing, write_monument_pdf_report
-
-        if args.report.lower().endswith(".pdf"):
-            write_monument_pdf_report(args.report, monument, site, strips, args.FC, args.q, args.limit_state,
-                                      args.project or "-", args.engineer or "-", rows=rows, height=height,
-                                      sld_site=sld)
-        else:
-            _, name, *gov = monument_governing(monument, site, strips, args.FC, args.q, args.limit_state, rows,
-                                               height, sld)
-            write_report(args.report, f"{monument.name} ({name})", site, *gov)
+        res.write_report(args.report, args.project or "-", args.engineer or "-")
         out["report"] = args.report
     if args.json:
         print_json(out)
         return 0
-    sd = strips.describe(monument.arch.width)
-    where = "ground level" if height is None else f"z/H = {height.z_ratio:g} of a {height.floors}-floor building"
-    print(f"{monument.name}: {site.describe()['code']} site, PGA {site.pga / G:.3f} g ({site.pga:.3g} m/s^2); "
-          f"{args.limit_state.upper()}{'' if sld is None else f' and SLD (ag {sld.ag / G:.3f} g)'}, at {where}; "
-          f"FRP {sd['strength_MPa']:g} MPa x {strips.thickness * 1e3:g} mm x {strips.width * 1e3:g} mm "
-          f"on the {strips.face}: design {sd['design_strength_MPa']:.4g} MPa ({sd['governing']}), "
-          f"force {sd['force_N'] / 1e3:.3g} kN" + ("" if tie is None else f"; tie at {tie.height:g} m yielding at "
-                                                  f"{tie.force / 1e3:.4g} kN (without the strips)"))
-    print(f"  {'configuration':18s} {'strengthening':13s} {'lambda':>7s} {'e*':>6s} {'a0* [g]':>8s} {'d0* [mm]':>9s} "
-          f"{'a0*/PGA':>7s} {'governing':>22s} {'index':>7s}  {'verdict':12s}  hinges")
-    for r in rows:
-        print(f"  {r['configuration']:18s} {_strengthening(r):13s} {r['lambda']:7.4f} {r['e_star']:6.3f} "
-              f"{r['a0_star'] / G:8.4f} {r['d0_star'] * 1e3:9.4g} {r['activation_over_pga']:7.3f} "
-              f"{r['governing_check']:>22s} {index_text(r['safety_index']):>7s}  "
-              f"{'verified' if r['verified'] else 'not verified':12s}  {hinges_text(r['hinges'])}")
-    print("  checks (safety index = capacity / demand):")
-    flat = [(r, c) for r in rows for c in r["check_rows"]]
-    for line in check_table([c for _, c in flat], [("configuration", 18, [r["configuration"] for r, _ in flat]),
-                                                   ("strengthening", 13, [_strengthening(r) for r, _ in flat])]):
-        print(line)
-    if strips.masonry is not None:
-        print(f"  FRP bond factors (CNR-DT 200 R1/2013): {strips.bond.text(_named_masonry(args))}")
+    print("\n".join(res.lines()))
     return 0
-
-
-def _print(title: str, hinges: list[dict], res) -> None:
-    d = res.describe()
-    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.experiments.assessment.figure import hinges_text
-
-    print(f"  {title}: hinges at {hinges_text(hinges)}")
-    print(f"    alpha0 = {d['alpha0']:.4f}   M* = {d['M_star']:.4g} kg   e* = {d['e_star']:.3f}   "
-          f"a0* = {d['a0_star'] / G:.4f} g (FC {d['FC']:g})   d0* = {d['d0_star'] * 1e3:.4g} mm")
-    for line in check_table(d["check_rows"]):
-        print("  " + line)
-    print(f"    governing: {d['governing_check']}, safety index {index_text(d['safety_index'])} "
-          f"({'verified' if d['verified'] else 'not verified'})")
 
 
 def _run(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.experiments.assessment.run import assess_with_records
+    from dem.experiments.assessment.run import AssessSpec, run
     from specimens.monuments import MONUMENTS
 
-    option_used(args, "engine", bool(args.records), "the engine runs the --records on the DEM")
+    option_used(args, "q", args.limit_state.upper() == "SLV", "it is the behaviour factor of the linear check, "
+                                                               "which only --limit-state SLV has")
     for dest in ("frp_fibre", "frp_exposure", "frp_application"):
         option_used(args, dest, args.frp is not None, "it designs the --frp strips")
     if args.id in MONUMENTS:
@@ -341,72 +257,22 @@ def _run(args: argparse.Namespace) -> int:
     tie = _tie(args)
     sld = _sld_site(args, site)
     _check_report(args)
-    if not args.records and (args.match_periods is not None or args.workers is not None):
-        raise ArchdemInputError("--match-periods and --workers belong to --records")
-    a = assess_with_records(arch, args.records or (), site, FC=args.FC, q=args.q, limit_state=args.limit_state,
-                            height=height, period_range=_period_range(args), settings=dynamics_settings(engine=args.engine),
-                            workers=args.workers, strips=strips, tie=tie, sld_site=sld,
-                            **discretisation_kwargs(args, arch))
-    mech, res = a.mechanism, a.assessment
-    out = {"id": label, "spectrum": site.describe(), "height": None if height is None else vars(height),
-           "mechanism": mech.summary(), **res.describe()}
-    frp, sc = a.strengthened_assessment, a.strengthened
-    key = "frp" if strips is not None else "tie"
-    if sc is not None:
-        out[key] = {"strips": None if strips is None else strips.describe(arch.width), "lambda": sc.lam,
-                    "mechanism": sc.mechanism.summary(), "hinges": sc.mechanism.summary()["hinges"],
-                    "strip_hinges": sc.strip_hinges(),
-                    "crushing": None if strips is None else sc.crushing(strips.masonry, args.FC),
-                    "tie": None if tie is None else {**tie.describe(), "force_at_collapse_kN": sc.tie_lp_force / 1e3,
-                                                     "anchors_m": [sc.tie_link.p_a.tolist(), sc.tie_link.p_b.tolist()]},
-                    **frp.describe()}
-    if a.records is not None:
-        out["records"] = a.records.describe()
+    option_used(args, "match_periods", bool(args.records), "it belongs to --records")
+    a = run(AssessSpec(arch, site, tuple(args.records or ()), FC=args.FC, q=args.q, limit_state=args.limit_state,
+                       height=height, period_range=_period_range(args), settings=dynamics_settings(engine=args.engine),
+                       workers=args.workers, strips=strips, tie=tie, sld_site=sld, label=label,
+                       **discretisation_kwargs(args, arch)))
+    out = a.describe()
     if args.report is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from dem.experiments.assessment.figure import write_report
-        from dem.experiments.assessment.report_pdf import command_inputs, write_pdf_report
+        from dem.experiments.assessment.report_pdf import command_inputs
 
-        if args.report.lower().endswith(".pdf"):
-            write_pdf_report(args.report, label, site, mech, res, out, frp, out.get(key), project=args.project or "-",
-                             engineer=args.engineer or "-", inputs=command_inputs(args, arch, strips))
-        else:
-            write_report(args.report, label, site, mech, res, out, frp, out.get(key))
+        a.write_report(args.report, out, args.project or "-", args.engineer or "-", command_inputs(args, arch, strips))
         out["report"] = args.report
     if args.json:
         print_json(out)
         return 0
-    where = "ground level" if height is None else f"z/H = {height.z_ratio:g} of a {height.floors}-floor building"
-    print(f"{label}: {site.describe()['code']} site, ag = {site.ag / G:.3f} g, PGA = {site.pga / G:.3f} g; "
-          f"{args.limit_state.upper()}, mechanism at {where}")
-    _print(f"unreinforced ({mech.label})", out["mechanism"].get("hinges", []), res)
-    if frp is not None:
-        parts = []
-        if strips is not None:
-            sd = out[key]["strips"]
-            parts.append(f"FRP strips on the {strips.face}, f_fd = {sd['design_strength_MPa']:.4g} MPa "
-                         f"({sd['governing']}), T = {sd['force_N'] / 1e3:.3g} kN")
-
-        if tie is not None:
-            parts.append(f"a tie at {tie.height:g} m yielding at {tie.force / 1e3:.4g} kN "
-                         f"({out[key]['tie']['force_at_collapse_kN']:.4g} kN at collapse)")
-        _print("with " + " and ".join(parts), out[key]["hinges"], frp)
-        if strips is not None and strips.masonry is not None:
-            print(f"    FRP bond factors (CNR-DT 200 R1/2013): {strips.bond.text(_named_masonry(args))}")
-        for c in out[key]["crushing"] or []:
-            print(f"    crushing at {c['joint']} ({c['face']}): C = {c['C_kN']:.3g} kN, stress block "
-                  f"{c['y_mm']:.3g} mm of {c['t_mm']:.3g} mm ({'verified' if c['verified'] else 'not verified'})")
-    if "records" in out:
-        rec = out["records"]
-        print(f"  records matched over {rec['period_range'][0]:.3g}-{rec['period_range'][1]:.3g} s, DEM "
-              f"({rec['engine']}, {'tied' if a.records.tied else 'unreinforced'}):")
-        for m, r in zip(rec["matched"], rec["runs"]):
-            print(f"    {m['record'][:48]:48s} x{m['scale']:.3g} (misfit {m['misfit_mean_ln']:.2f}): "
-                  f"{'COLLAPSE' if r['collapsed'] else 'stands'}, peak d* {r['peak_d_star'] * 1e3:.3g} mm")
-        v = rec["verdict"]
-        print(f"    mean peak d* {v['mean_peak_d_star'] * 1e3:.3g} mm vs d_u* {v['du_star'] * 1e3:.3g} mm, "
-              f"{v['n_reach_d0']} of {v['n_records']} reach d0* -> {'verified' if v['verified'] else 'NOT verified'}"
-              f" (code check: {'verified' if (frp if a.records.tied else res).verified else 'NOT verified'})")
+    print("\n".join(a.lines(out)))
     if args.report is not None:
         print(f"  report: {args.report}")
     return 0
@@ -423,7 +289,7 @@ def register(sub) -> None:
                               "options, --tie (a row per configuration with the tie alone) and --json do. Each check "
                               "prints its demand and capacity as the clause compares them and the safety index "
                               "capacity / demand (docs/physics/assessment.md).")
-    add_arch_arguments(p)
+    add_options(p, "assess")
     p.add_argument("--spectrum", default=None, metavar="ntc2018|ec8|FILE",
                    help="the code's elastic spectrum, or a file of period [s] and Se [g] at 5 %% damping (a monument "
                         "such as noh-gumbad: its site's by default)")
@@ -493,13 +359,9 @@ def register(sub) -> None:
                         "noh-gumbad)")
     p.add_argument("--match-periods", default=None, metavar="LO,HI",
                    help="period range [s] of the records' match (default 0.2-2 x the limit state's period)")
-    add_engine_argument(p, dynamics=True)
-    p.add_argument("--workers", type=workers_option, default=None,
-                   help="processes for the record runs (default: all cores, at most one per record)")
     p.add_argument("--report", default=None, metavar="FILE.html|FILE.pdf",
                    help="write the assessment with its figures: FILE.html one page, FILE.pdf a printable report "
                         "(title block, inputs, site, each step, verdicts, figures) (never overwrites)")
     p.add_argument("--project", default=None, help="--report FILE.pdf: the project named in the title block (default -)")
     p.add_argument("--engineer", default=None, help="--report FILE.pdf: the engineer named in the title block (default -)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=_run)

@@ -4,18 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from analytic.codes.assessment import NOH_GUMBAD_FRP, assess_monument, monument_site, monument_strips
+from analytic.codes.assessment import NOH_GUMBAD_FRP, monument_site, monument_strips
 from dem.common.campaign import CampaignContext, write_csv
+from dem.experiments.assessment.run import MonumentAssessment, MonumentSpec, run
 from specimens.constants import G
 from specimens.monuments import NOH_GUMBAD
-
-
-def _check_csv(c: dict) -> dict:
-    """One row of :func:`analytic.codes.assessment.check_rows` for a CSV: accelerations in g, displacements in mm."""
-    f, unit = (1 / G, "g") if c["unit"] == "m/s^2" else (1e3, "mm")
-    return {"limit_state": c["limit_state"], "check": c["check"], "demand": f"{c['demand_symbol']}",
-            "demand_value": c["demand"] * f, "capacity": c["capacity_symbol"], "capacity_value": c["capacity"] * f,
-            "unit": unit, "safety_index": c["safety_index"], "verdict": c["verdict"], "clause": c["clause"]}
 
 
 def step_assess(ctx: CampaignContext, d: Path) -> dict:
@@ -23,23 +16,14 @@ def step_assess(ctx: CampaignContext, d: Path) -> dict:
     site = monument_site()
     strips = monument_strips()
     design = strips.describe(NOH_GUMBAD.arch.width)
-    rows = assess_monument(NOH_GUMBAD, site, strips)
-    table = [{"configuration": r["configuration"], "frp": r["frp"], "lambda": r["lambda"], "e_star": r["e_star"],
-              "M_star_kg": r["M_star"], "a0_star_g": r["a0_star"] / G, "d0_star_mm": r["d0_star"] * 1e3,
-              "du_star_mm": r["du_star"] * 1e3, "a0_over_pga_published_convention": r["activation_over_pga"],
-              "safety_index_linear": r["safety_index_linear"],
-              "safety_index_displacement": r["safety_index_displacement"], "verified": r["verified"],
-              "hinges_rad": " ".join(f"{h['angle_rad']:.3f}" for h in r["hinges"])} for r in rows]
-    write_csv(d / "assess.csv", table)
+    res = run(MonumentSpec(NOH_GUMBAD, strips, site))
+    rows, table = res.assessed, res.rows()
+    res.write_csv(d / "assess.csv")
     # every check as the code states it: the index is capacity / demand of the two columns beside it
-    write_csv(d / "checks.csv", [{"configuration": r["configuration"], "frp": r["frp"], **_check_csv(c)}
-                                 for r in rows for c in r["check_rows"]])
+    write_csv(d / "checks.csv", res.check_rows(), MonumentAssessment.CHECKS_SCHEMA)
     # the calculation of the governing configuration (least governing index), line by line
-    gov = min(rows, key=lambda r: r["safety_index"])
-    calc = [{"quantity": st["symbol"],
-             "value": " ".join(f"{v:.5g}" for v in st["value"]) if isinstance(st["value"], list) else st["value"],
-             "unit": st["unit"], "formula": st["formula"]} for st in gov["trail"]]
-    write_csv(d / "calculation.csv", calc)
+    gov = res.governing
+    write_csv(d / "calculation.csv", res.calculation_rows(), MonumentAssessment.CALCULATION_SCHEMA)
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.assessment.report_pdf import write_monument_pdf_report
 

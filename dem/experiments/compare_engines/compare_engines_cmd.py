@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import default_of, figure_file, print_json, workers_option
+from dem.common.options import add_options, default_of, figure_file, print_json
 from dem.core.engines import available_engines
 from dem.core.progress import terminal
 from dem.core.settings import Settings
@@ -22,8 +22,6 @@ def _run(args: argparse.Namespace) -> int:
     if len(set(engines)) != 2 or len(engines) != 2:
         raise ArchdemInputError(f"give two different engines to compare, got {args.engines!r}")
     frictions = ("none", "reference") if args.friction == "both" else (args.friction,)
-    if args.workers < 1:
-        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
     base = Settings() if args.dt is None else Settings(dt=args.dt)
     if args.plot:
         figure_file(args.plot)
@@ -52,14 +50,9 @@ def register(sub) -> None:
     engines = ",".join(default_of(compare, "engines"))
     p = sub.add_parser("compare-engines", help="tilt lambda from both engines vs limit analysis, per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(compare, "config"))
     p.add_argument("--engines", default=engines, help=f"two engines (default {engines})")
     p.add_argument("--friction", choices=("both", "none", "reference"), default="both",
                    help="no sliding, reference friction "
                         f"{'/'.join(f'{m:g}' for m in FRICTIONS['reference'])}, or both (default)")
-    p.add_argument("--dt", type=float, default=None,
-                   help=f"time step [s] for both engines (default {default_of(Settings, 'dt'):g})")
-    p.add_argument("--workers", type=workers_option, default=1, help="processes (default 1)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--plot", default=None, help="figure file (.png/.pdf/.svg)")
+    add_options(p, "compare-engines", config=default_of(compare, "config"), workers=1)
     p.set_defaults(func=_run)

@@ -9,13 +9,13 @@ import math
 from pathlib import Path
 
 from dem.common.options import (
+    add_options,
     default_of,
     parse_grid,
     print_json,
     study_definition,
     study_path,
     study_stopped,
-    workers_option,
 )
 from dem.core.engines import available_engines, check_engine
 from dem.experiments.compare_engines.run import FRICTIONS
@@ -28,6 +28,8 @@ from dem.experiments.compare_engines.shake import (
     step_agreement,
     study_attrs,
     study_cases,
+    verdict_counts,
+    verdicts,
 )
 from specimens.catalogue import select_specimens
 from foundation.errors import ArchdemInputError
@@ -79,13 +81,14 @@ def _run(args: argparse.Namespace) -> int:
     rows, groups = case_rows(res.records), classify(res.records)
     pairs = {f"{s:g}": pairwise(res.records, s) for s in steps}
     steadiness = step_agreement(res.records)
+    flags = verdicts(res.records)
     csv_path = write_csv(rows, Path(path).with_suffix(".csv"))
     failed = [f"{r.params['id']} {r.params['engine']} {r.params['freq']:g} Hz: {r.error.strip().splitlines()[-1]}"
               for r in res.failed]
     if args.json:
         print_json({"study": str(path), "csv": str(csv_path), "cases": rows, "features": groups,
                     "counts": class_counts(groups), "pairwise": pairs, "step_agreement": steadiness,
-                    "failed": failed})
+                    "verdicts": flags, "verdict_counts": verdict_counts(flags), "failed": failed})
         return 0
     print(f"{len(rows)} of {len(res)} cases -> {path} (table: {csv_path})")
     for r in rows:
@@ -100,6 +103,11 @@ def _run(args: argparse.Namespace) -> int:
             print(f"x{s} {pair} agree: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items()))
     for e, v in steadiness.items():
         print(f"{e} at its steps agrees: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items()))
+    for v in flags:
+        lo, hi = v["range_g"]
+        rng = "" if v["status"] != "range" else f" {lo:.3f}-" + ("none" if hi is None else f"{hi:.3f}") + " g"
+        print(f"{v['id']:<11} {v['friction']:<6} {v['freq']:4g} Hz default threshold {v['status']}{rng}"
+              + (f" ({v['why']})" if v["why"] else ""))
     for f in failed:
         print(f"failed: {f}")
     return 0 if not failed else 1
@@ -130,10 +138,5 @@ def register(sub) -> None:
     p.add_argument("--friction", default=d["frictions"],
                    help="friction cases: " + ", ".join(f"{k} {v[0]:g}/{v[1]:g}" for k, v in FRICTIONS.items())
                         + f" (joint/base; default {d['frictions']})")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(study_cases, "config"))
-    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
-    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT")
-    p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/compare-shake/...)")
-    p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted study")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_options(p, "compare-shake", config=default_of(study_cases, "config"))
     p.set_defaults(func=_run)

@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from foundation.io import atomic_path
+from dem.common.figures import save_figure
 
 
 def plot_engine_comparison(rows, axes=None):
@@ -33,10 +33,7 @@ def plot_engine_comparison(rows, axes=None):
 def save_engine_comparison(rows, path: str | Path) -> Path:
     """Write the figure (png/pdf/svg) atomically."""
 
-    path = Path(path)
     axes = plot_engine_comparison(rows)
     fig = axes[0].figure
     fig.tight_layout()
-    with atomic_path(path, overwrite=True) as tmp:
-        fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=120)
-    return path
+    return save_figure(fig, path, overwrite=True, tight=False)

@@ -10,20 +10,18 @@ for orientation only, and the engines are compared with each other.
 from __future__ import annotations
 
 import math
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 from dem.core.provenance import engine_version
 from dem.core.model import from_assembly
 from dem.core.progress import Progress
 from dem.core.settings import Settings
-from dem.experiments.tilt.check import TiltCheck, check_result, reference_lp
-from dem.experiments.tilt.run import tilt
+from dem.experiments.tilt import TiltCheck, check_result, reference_lp, tilt
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from foundation.errors import ArchdemInputError
-from foundation.processes import die_with_parent
+from foundation.processes import worker_pool
 
 #: Friction cases (joint, base): no sliding; the reference frictions; the joints' own on a base that does not slide.
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE),
@@ -131,7 +129,7 @@ def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("
         for j in jobs:
             done(_one(j))
     else:
-        with ProcessPoolExecutor(min(workers, len(jobs)), initializer=die_with_parent) as ex:
+        with worker_pool(min(workers, len(jobs))) as ex:
             for rows in ex.map(_one, jobs):
                 done(rows)
     return [r for rows in out for r in rows]

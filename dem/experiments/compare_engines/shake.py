@@ -24,9 +24,9 @@ from dem.core.provenance import engine_version
 from dem.core.engines.lmgc90_engine import LMGC90Options
 from dem.core.engines.mujoco_engine import DEFAULT_OPTIONS as MUJOCO_OPTIONS
 from dem.core.model import from_assembly
-from dem.core.settings import Settings
+from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings
 from dem.experiments.compare_engines.run import FRICTIONS
-from dem.experiments.shake.thresholds import static_onset, threshold
+from dem.experiments.shake import CHECK_MARGIN, reference_needed, static_onset, threshold
 from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, get_specimen
 from foundation.errors import ArchdemInputError
@@ -282,4 +282,73 @@ def step_moves(records, engines: tuple[str, ...] | None = None, feature: str = "
         moved = sorted(e for e, v in by_engine.items() if len(v) > 1 and not _agree(v))
         if moved:
             out.append({"id": sid, "friction": fr, "freq": f, "moved": moved, "values": vals})
+    return out
+
+
+def default_step(engine: str = DYNAMICS_ENGINE) -> float:
+    """The study's step factor of the shakes' default (``DYNAMICS_DT`` on ``engine``: x0.5 for MuJoCo)."""
+    return DYNAMICS_DT / integration_step(engine)
+
+
+def _reads_alike(default: float, other: float) -> bool:
+    """The rule of the thresholds' check: ``other``'s first threshold within the default's bracket
+    widened by ``CHECK_MARGIN`` (its survival end: the threshold / (1 + TOL)); both none agree."""
+    if not (math.isfinite(default) and math.isfinite(other)):
+        return not (math.isfinite(default) or math.isfinite(other))
+    return default / (CHECK_MARGIN * (1 + TOL)) < other <= default * CHECK_MARGIN * (1 + 1e-9)
+
+
+def group_verdict(firsts: dict, freq: float, mu_joint: float, mu_base: float, engine: str = DYNAMICS_ENGINE,
+                  step: float | None = None, reference: str = "lmgc90") -> dict:
+    """The settled-or-range verdict of a group's default threshold from a study's readings, by the rule of
+    :func:`dem.experiments.shake.check_threshold`: ``firsts`` ``{(engine, step): first threshold [g], nan
+    none}``; the default ``(engine, step)`` (``step`` default :func:`default_step`) checked against the same
+    engine at half its step and, where :func:`reference_needed`, against ``reference`` at its default step.
+    Returns ``status`` (settled, range, unchecked), ``range_g`` ``[low, high]`` (None: no collapse to the top),
+    ``why``, ``readings`` ``{"engine@step": value}``."""
+    step = default_step(engine) if step is None else step
+    if (engine, step) not in firsts:
+        return {"status": "unchecked", "range_g": [None, None], "why": f"no {engine} x{step:g} reading", "readings": {}}
+    wanted = [("half step", (engine, 0.5 * step))]
+    if reference_needed(freq, Settings(mu_joint=mu_joint, mu_base=mu_base)):
+        wanted.append((reference, (reference, 1.0)))
+    t0 = firsts[(engine, step)]
+    used = {(engine, step): t0}
+    missing, moved = [], []
+    for name, key in wanted:
+        if key not in firsts:
+            missing.append(f"no {key[0]} x{key[1]:g} reading")
+            continue
+        used[key] = firsts[key]
+        if not _reads_alike(t0, firsts[key]):
+            moved.append(name)
+    readings = {f"{e}@{s:g}": v for (e, s), v in used.items()}
+    vals = list(used.values())
+    if moved:
+        finite = [v for v in vals if math.isfinite(v)]
+        return {"status": "range", "range_g": [min(finite), None if len(finite) < len(vals) else max(finite)],
+                "why": f"{', '.join(moved)} reads otherwise" + (f"; {'; '.join(missing)}" if missing else ""),
+                "readings": readings}
+    if missing:
+        return {"status": "unchecked", "range_g": [None, None], "why": "; ".join(missing), "readings": readings}
+    return {"status": "settled", "range_g": [t0, t0], "why": "", "readings": readings}
+
+
+def verdicts(records, engine: str = DYNAMICS_ENGINE, step: float | None = None) -> list[dict]:
+    """:func:`group_verdict` of every (specimen, friction, frequency) of a study, in the records' order:
+    ``id``, ``friction``, ``freq`` and the verdict's fields."""
+    out = []
+    for (sid, fr, f), g in _by_group(records).items():
+        firsts = {k: res["amplitude_g"] for k, res in g.items()}
+        mu_j, mu_b = FRICTIONS[fr]
+        out.append({"id": sid, "friction": fr, "freq": f, **group_verdict(firsts, f, mu_j, mu_b, engine, step)})
+    return out
+
+
+def verdict_counts(rows: list[dict]) -> dict:
+    """``{friction: {status: count}}`` over :func:`verdicts`."""
+    out: dict = {}
+    for r in rows:
+        c = out.setdefault(r["friction"], {})
+        c[r["status"]] = c.get(r["status"], 0) + 1
     return out

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from dem.experiments.shake.figure import _save
+from dem.common.figures import save_figure
 
 
 def fragility_figure(res):
@@ -36,4 +36,4 @@ def fragility_figure(res):
 
 
 def save_fragility_figure(res, path) -> None:
-    _save(fragility_figure(res), path)
+    save_figure(fragility_figure(res), path)

@@ -3,29 +3,25 @@ perturbed realisations, under sine pulses or a suite of records (docs/physics/fr
 from __future__ import annotations
 
 import argparse
+import functools
 import math
 import os
 
+from dem.common.limits import MAX_AMPLITUDE_G, MAX_SINE_HZ, MIN_SINE_HZ
 from dem.common.options import (
-    add_arch_arguments,
-    add_contact_law_arguments,
-    add_dynamics_dt_argument,
-    add_engine_argument,
-    add_friction_arguments,
+    add_options,
     arch_from_args,
     block_from_args,
-    contact_law_settings,
-    default_of,
     discretisation_kwargs,
     figure_file,
     option_used,
     parse_grid,
     print_json,
     require_standing,
+    settings_kwargs,
     study_definition,
     study_path,
     study_stopped,
-    workers_option,
 )
 from dem.core.model import from_assembly, single_block
 from dem.core.progress import terminal
@@ -34,19 +30,18 @@ from dem.experiments.fragility.run import (
     DEFAULT_EDGE_LOSS_SD,
     DEFAULT_FRICTION_COV,
     DEFAULT_SIZE_SD,
+    FragilitySpec,
     Perturbation,
     arch_structure,
     block_structure,
     drawing_structure,
-    fragility,
     make_cases,
     prepared_record,
     record_spec,
     sine_spec,
 )
-from dem.experiments.shake.run import ShakeProtocol
-from dem.experiments.shake.shake_cmd import MAX_AMPLITUDE_G, MAX_SINE_HZ, MIN_SINE_HZ
-from dem.experiments.shake.thresholds import threshold
+from dem.experiments.fragility.run import run as run_fragility
+from dem.experiments.shake import ShakeProtocol, threshold
 from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.constants import G
 from foundation.errors import ArchdemInputError
@@ -74,12 +69,9 @@ def _structure(args: argparse.Namespace):
 
 
 def _settings(args: argparse.Namespace) -> dict:
-    s = {"engine": args.engine, "mu_joint": args.mu_joint, "mu_base": args.mu_base, "planar": bool(args.planar),
-         **contact_law_settings(args, getattr(args, "id", None))}
-    if args.dt is not None:
-        s["dt"] = args.dt
+    s = settings_kwargs(args)
     if args.solver_iterations is not None:
-        s["solver_iterations"] = args.solver_iterations
+        s["engine_options"] = {"solver_iterations": args.solver_iterations}
     s["dt"] = dynamics_settings(**s).dt  # checks them; the step written into the study
     return s
 
@@ -124,19 +116,20 @@ def _groups(args: argparse.Namespace) -> tuple[list, dict]:
 
 
 def _deterministic(args, model, settings: dict, groups: list, info: dict) -> dict:
-    """Per frequency, the least collapsing amplitude of the nominal structure (``archdem threshold``)."""
+    """Per frequency, the least collapsing amplitude of the nominal structure (``archdem threshold``):
+    checked now; per group the function that runs it (the study runs it once its file exists)."""
     option_used(args, "no_deterministic", info["input"] == "sine", "the deterministic thresholds are the sines'")
     if info["input"] != "sine" or args.no_deterministic:
         return {}
 
-    out = {}
-    for (name, _, items), f in zip(groups, info["freqs"]):
-        amps = [a for a, _ in items]
+    def run(f: float, amps: list[float]) -> float:
         with terminal(f"deterministic threshold {f:g} Hz", unit="runs", enabled=not args.json) as line:
-            r = threshold(model, f, Settings(**settings), ShakeProtocol(), a_min_g=0.5 * amps[0],
-                          a_max_g=2.0 * amps[-1], workers=args.workers, scheduler=args.scheduler, progress=line)
-        out[name] = r.amplitude_g
-    return out
+            return threshold(model, f, Settings(**settings), ShakeProtocol(), a_min_g=0.5 * amps[0],
+                             a_max_g=2.0 * amps[-1], workers=args.workers, scheduler=args.scheduler,
+                             progress=line).amplitude_g
+
+    return {name: functools.partial(run, f, [a for a, _ in items])
+            for (name, _, items), f in zip(groups, info["freqs"])}
 
 
 def _perturbation(args: argparse.Namespace, structure: dict):
@@ -172,10 +165,11 @@ def _run(args: argparse.Namespace) -> int:
     if args.scheduler:
         check_scheduler(args.scheduler)  # before the deterministic runs and the study file
     deterministic = _deterministic(args, model, settings, groups, info)
+    spec = FragilitySpec(label, structure, settings, pert, groups, args.realizations, args.seed, path,
+                         workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
+                         deterministic=deterministic, definition=study_definition(args))
     try:
-        res = fragility(label, structure, settings, pert, groups, args.realizations, args.seed, path,
-                        workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
-                        deterministic=deterministic, definition=study_definition(args))
+        res = run_fragility(spec)
     except (StudyInterrupted, KeyboardInterrupt) as exc:
         return study_stopped(path, exc)
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
@@ -191,15 +185,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(out)
         return 0
-    print(f"{label}: {res.n_runs} runs ({args.realizations} realisations per stripe), {res.wall_s:.0f} s -> {path}")
-    for c in res.curves:
-        pts = "  ".join(f"{s.intensity:g}:{s.k}/{s.n}" for s in c.stripes)
-        fit = (f"median {c.fit.median:.4g} {c.unit} [{c.fit.median_ci[0]:.4g}, {c.fit.median_ci[1]:.4g}], beta "
-               f"{c.fit.beta:.3g} [{c.fit.beta_ci[0]:.3g}, {c.fit.beta_ci[1]:.3g}]" if c.fit else f"no fit ({c.fit_note})")
-        det = "" if c.deterministic is None else f"; deterministic threshold {c.deterministic:.4g} {c.unit}"
-        print(f"  {c.group}: {fit}{det}\n    collapsed/runs per stripe: {pts}")
-    if res.failed:
-        print(f"  {len(res.failed)} runs failed; first: {res.failed[0]}")
+    print("\n".join(res.lines(args.realizations)))
     return 0
 
 
@@ -207,10 +193,7 @@ def register(sub) -> None:
     p = sub.add_parser("fragility", help="collapse probability and lognormal fragility from ensembles of perturbed "
                                          "realisations (sine pulses or a suite of records)",
                        description=__doc__.splitlines()[0])
-    add_arch_arguments(p)
-    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
-                   help="a rectangular block of half-width B and half-height H [m] instead of an arch")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
+    add_options(p, "fragility")
     p.add_argument("--sine", default=None, metavar="F[,F...]", help="one-cycle sine pulses of these frequencies [Hz]")
     p.add_argument("--amplitudes", default=None, metavar="GRID", help="sine amplitudes [g]: START:STOP:STEP or a,b,c")
     p.add_argument("--records", nargs="+", default=None, metavar="FILE", help="a suite of records (.AT2, .smc, ESM, CSV)")
@@ -226,19 +209,6 @@ def register(sub) -> None:
                    help=f"scatter of a block's base and height [mm] (block; default {DEFAULT_SIZE_SD * 1e3:g})")
     p.add_argument("--friction-cov", type=float, default=DEFAULT_FRICTION_COV,
                    help=f"coefficient of variation of the friction coefficients (default {DEFAULT_FRICTION_COV:g})")
-    add_friction_arguments(p, "nominal ")
-    p.add_argument("--planar", action="store_true", help="constrain the blocks to the plane")
-    add_dynamics_dt_argument(p)
-    p.add_argument("--solver-iterations", type=int, default=None,
-                   help=f"solver iterations per step (default {default_of(Settings, 'solver_iterations')})")
-    add_engine_argument(p, dynamics=True)
-    add_contact_law_arguments(p)
     p.add_argument("--no-deterministic", action="store_true",
                    help="skip the nominal structure's threshold beside each sine curve")
-    p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")
-    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
-    p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/fragility/...)")
-    p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted study")
-    p.add_argument("--plot", default=None, metavar="FILE.png", help="fragility curves with their intervals")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=_run)

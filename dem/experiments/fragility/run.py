@@ -19,16 +19,18 @@ import hashlib
 import math
 import os
 import time
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
+from typing import Any, Callable, ClassVar
 
 import numpy as np
 
 from analytic.motions.inputs import SampledMotion, SinePulse
 from analytic.motions.records import baseline_correct, read_record
+from dem.common.arch import arch_from_params, arch_params
 from dem.core.model import from_assembly, single_block
 from dem.core.settings import dynamics_settings
-from dem.experiments.shake.run import ShakeProtocol, shake
-from dem.experiments.tilt.case import arch_from_params, arch_params
+from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.shake import ShakeProtocol, shake
 from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, discretise
 from specimens.constants import G
 from foundation.errors import ArchdemInputError
@@ -66,8 +68,8 @@ class Perturbation:
             raise ArchdemInputError(f"friction coefficient of variation must be from 0 to 1, got {v!r}")
 
     def describe(self) -> dict:
-        return {"edge_loss": float(self.edge_loss), "edge_loss_sd": float(self.edge_loss_sd),
-                "size_sd": float(self.size_sd), "friction_cov": float(self.friction_cov)}
+        """The perturbation as a case and the study file hold it: every field, as a float."""
+        return {k: float(v) for k, v in asdict(self).items()}
 
 
 # ------------------------------------------------------------------------------------------ structures
@@ -191,8 +193,26 @@ class Curve:
                 "deterministic_threshold": self.deterministic}
 
 
+#: The fits' table: one row per curve (empty cells where no fit).
+FITS_SCHEMA = Schema((
+    Column("group", "str"), Column("unit", "str"), Column("median", "float"), Column("median_ci_low", "float"),
+    Column("median_ci_high", "float"), Column("beta", "float"), Column("beta_ci_low", "float"),
+    Column("beta_ci_high", "float"), Column("n_runs", "int"), Column("deterministic_threshold", "float"),
+    Column("note", "str"),
+))
+
+
 @dataclass(frozen=True)
-class FragilityResult:
+class FragilityResult(Result):
+    """A fragility study's curves (:class:`Curve`), its runs and failures, its file and its wall time [s].
+    Its table (``SCHEMA``): one row per stripe; :meth:`fit_rows` (:data:`FITS_SCHEMA`) one per curve."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("group", "str"), Column("unit", "str"), Column("intensity", "float"), Column("n_runs", "int"),
+        Column("n_collapsed", "int"), Column("p", "float"), Column("ci_low", "float"), Column("ci_high", "float"),
+        Column("modes", "str"),
+    ))
+
     label: str
     curves: list
     n_runs: int
@@ -207,6 +227,38 @@ class FragilityResult:
         if len(self.curves) == 1:
             c = out["curves"][0]
             out.update(points=c["points"], fit=c["fit"], deterministic_threshold=c["deterministic_threshold"])
+        return out
+
+    def rows(self) -> list[dict]:
+        """One row per stripe: its curve, intensity, runs, collapses, probability with its interval, and
+        the failure modes as ``mode:count`` words."""
+        return [{"group": c.group, "unit": c.unit, **{k: v for k, v in s.describe().items() if k != "modes"},
+                 "modes": " ".join(f"{m}:{n}" for m, n in sorted(s.modes.items()))} for c in self.curves for s in c.stripes]
+
+    def fit_rows(self) -> list[dict]:
+        """One row per curve: the fitted median and beta with their intervals (None without a fit), the
+        runs, the deterministic threshold and the fit's note."""
+        none = dict.fromkeys(("median", "median_ci_low", "median_ci_high", "beta", "beta_ci_low", "beta_ci_high"))
+        return [{"group": c.group, "unit": c.unit,
+                 **({"median": c.fit.median, "median_ci_low": c.fit.median_ci[0], "median_ci_high": c.fit.median_ci[1],
+                     "beta": c.fit.beta, "beta_ci_low": c.fit.beta_ci[0], "beta_ci_high": c.fit.beta_ci[1]}
+                    if c.fit else none),
+                 "n_runs": sum(s.n for s in c.stripes), "deterministic_threshold": c.deterministic, "note": c.fit_note}
+                for c in self.curves]
+
+    def lines(self, realisations: int) -> list[str]:
+        """The study as ``archdem fragility`` prints it; ``realisations``: per stripe."""
+        out = [f"{self.label}: {self.n_runs} runs ({realisations} realisations per stripe), {self.wall_s:.0f} s -> "
+               f"{self.result_file}"]
+        for c in self.curves:
+            pts = "  ".join(f"{s.intensity:g}:{s.k}/{s.n}" for s in c.stripes)
+            fit = (f"median {c.fit.median:.4g} {c.unit} [{c.fit.median_ci[0]:.4g}, {c.fit.median_ci[1]:.4g}], beta "
+                   f"{c.fit.beta:.3g} [{c.fit.beta_ci[0]:.3g}, {c.fit.beta_ci[1]:.3g}]" if c.fit
+                   else f"no fit ({c.fit_note})")
+            det = "" if c.deterministic is None else f"; deterministic threshold {c.deterministic:.4g} {c.unit}"
+            out.append(f"  {c.group}: {fit}{det}\n    collapsed/runs per stripe: {pts}")
+        if self.failed:
+            out.append(f"  {len(self.failed)} runs failed; first: {self.failed[0]}")
         return out
 
 
@@ -228,21 +280,32 @@ def make_cases(label: str, structure: dict, settings: dict, perturbation: Pertur
 
 def fragility(label: str, structure: dict, settings: dict, perturbation: Perturbation, groups: list, n: int,
               seed: int, out_path: str | os.PathLike, workers: int | None = None, scheduler: str | None = None,
-              resume: bool = False, progress: bool = True, deterministic: dict | None = None,
+              resume: bool = False, progress: bool = True,
+              deterministic: dict[str, float | Callable[[], float]] | None = None,
               definition: dict | None = None) -> FragilityResult:
     """Run (or resume) the study of ``groups`` x ``n`` realisations and fit each group's curve;
-    ``deterministic``: group -> threshold of the nominal structure, reported beside the fit;
-    ``definition``: the command line's options, stored with a new study."""
+    ``deterministic``: group -> threshold of the nominal structure, reported beside the fit, or the
+    function that computes it: called once the study file exists, each threshold kept in it as it
+    ends (a resume reads it back); ``definition``: the command line's options, stored with a new study."""
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.codes.fragility import fit_lognormal, stripes
-    from dem.studies.sweep import case_key, run_study
+    from dem.studies.sweep import case_key, open_study, run_study, store_note, stored_note, study_lock
 
     t0 = time.perf_counter()
     cases = make_cases(label, structure, settings, perturbation, groups, n, seed)
     attrs = {"study": STUDY_KIND, "label": label, "structure": structure, "settings": settings,
              "perturbation": perturbation.describe(), "n": n, "groups": [[g, u] for g, u, _ in groups]}
-    res = run_study(cases, FRAGILITY_CASE, out_path, workers=workers, scheduler=scheduler, resume=resume,
-                    progress=progress, study_attrs=attrs, seed=int(seed), definition=definition)
+    with study_lock(out_path):
+        # the file and its definition first: a stop during the thresholds leaves a study to resume
+        open_study(out_path, FRAGILITY_CASE, attrs, int(seed), resume, definition)
+        det = dict(stored_note(out_path, "deterministic") or {})
+        for name, value in (deterministic or {}).items():
+            if name not in det:
+                det[name] = value() if callable(value) else value
+                store_note(out_path, "deterministic", det)
+        deterministic = det
+        res = run_study(cases, FRAGILITY_CASE, out_path, workers=workers, scheduler=scheduler, resume=True,
+                        progress=progress, study_attrs=attrs, seed=int(seed))
     by_key = res.by_key
     curves, failed = [], []
     for name, unit, _ in groups:
@@ -267,5 +330,42 @@ def fragility(label: str, structure: dict, settings: dict, perturbation: Perturb
     return FragilityResult(label, curves, len(cases), tuple(failed), str(out_path), time.perf_counter() - t0)
 
 
+@dataclass(frozen=True)
+class FragilitySpec:
+    """A fragility study (:func:`run`): ``label`` names the structure, ``structure`` its case entry
+    (:func:`arch_structure`, :func:`block_structure`, :func:`drawing_structure`), ``settings`` the engine's
+    (a dict written into the study), ``perturbation`` each realisation's, ``groups`` ``(name, unit,
+    [(intensity, motion spec), ...])`` each, ``n`` realisations per stripe of seed ``seed``; the study file
+    ``out_path``, run in ``workers`` or on ``scheduler`` (continued with ``resume``); ``deterministic`` and
+    ``definition`` as :func:`fragility` takes them."""
+
+    label: str
+    structure: dict
+    settings: dict
+    perturbation: Perturbation
+    groups: list
+    n: int
+    seed: int
+    out_path: Any
+    workers: int | None = None
+    scheduler: str | None = None
+    resume: bool = False
+    progress: bool = True
+    deterministic: dict | None = None
+    definition: dict | None = None
+
+    def cases(self) -> list[dict]:
+        """The study's cases (:func:`make_cases`): checks the realisations, the seed and the study's size."""
+        return make_cases(self.label, self.structure, self.settings, self.perturbation, self.groups, self.n, self.seed)
+
+
+def run(spec: FragilitySpec) -> FragilityResult:
+    """Run (or resume) the study ``spec`` and fit its curves (:func:`fragility`)."""
+    return fragility(spec.label, spec.structure, spec.settings, spec.perturbation, spec.groups, spec.n, spec.seed,
+                     spec.out_path, workers=spec.workers, scheduler=spec.scheduler, resume=spec.resume,
+                     progress=spec.progress, deterministic=spec.deterministic, definition=spec.definition)
+
+
 __all__ = ["Perturbation", "arch_structure", "block_structure", "sine_spec", "record_spec", "prepared_record",
-           "shake_case", "make_cases", "fragility", "FragilityResult", "Curve", "FRAGILITY_CASE"]
+           "shake_case", "make_cases", "fragility", "FragilityResult", "Curve", "FRAGILITY_CASE", "FITS_SCHEMA",
+           "FragilitySpec", "run"]

@@ -2,17 +2,19 @@
 realisations, beside the deterministic DEM threshold and the four-bar (docs/physics/fragility.md)."""
 from __future__ import annotations
 
+import functools
 import math
 from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
-from analytic.rocking.domain import failure_domain
+from analytic.rocking.domain import failure_domain as linkage_domain
 from analytic.rocking.linkage import minimised_four_bar
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
 from dem.core.model import as_model
 from dem.core.progress import terminal
+from dem.experiments.contract import Column, Schema
 from dem.experiments.fragility.figure import fragility_figure
 from dem.experiments.fragility.file import write_tables
 from dem.experiments.fragility.run import (
@@ -23,8 +25,7 @@ from dem.experiments.fragility.run import (
     fragility,
     sine_spec,
 )
-from dem.experiments.shake.run import ShakeProtocol
-from dem.experiments.shake.thresholds import static_onset, threshold
+from dem.experiments.shake import ShakeProtocol, static_onset, threshold
 from specimens.constants import G
 
 #: Frequencies [Hz] and amplitude grids (multiples of the static onset lambda) of the study: around the
@@ -32,6 +33,13 @@ from specimens.constants import G
 GRIDS = {2.0: (1.0, 1.4, 0.05), 4.0: (1.2, 2.6, 0.2), 6.0: (1.6, 4.4, 0.4)}
 #: Realisations per stripe, quick and full.
 N_QUICK, N_FULL = 5, 20
+#: The step's table: per specimen and frequency the fit, the nominal threshold and the four-bar's.
+MEDIANS_SCHEMA = Schema((
+    Column("id", "str"), Column("freq_hz", "float", "Hz"), Column("lambda_static", "float"),
+    Column("realisations", "int"), Column("runs", "int"), Column("median_g", "float", "g"), Column("beta", "float"),
+    Column("median_ci_low", "float", "g"), Column("median_ci_high", "float", "g"),
+    Column("deterministic_g", "float", "g"), Column("four_bar_g", "float", "g"), Column("note", "str"),
+))
 
 
 def fragility_plan(ctx: CampaignContext) -> tuple[list, list[float], int]:
@@ -57,13 +65,17 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
         model = as_model(s, config=ctx.config)
         lam = static_onset(model, dyn)
         groups, det = [], {}
-        for f in freqs:
-            lo, hi, step = GRIDS[f]
-            amps = [round(k * lam, 4) for k in np.arange(lo, hi + 1e-9, step)]
-            groups.append((f"{f:g} Hz", "g", [(a, sine_spec(f, a)) for a in amps]))
+
+        def nominal(f: float, a_max_g: float, s=s, model=model, dyn=dyn, lam=lam) -> float:
             with terminal(f"[fragility] {s.id} {f:g} Hz threshold", unit="runs") as line:
-                det[f"{f:g} Hz"] = threshold(model, f, dyn, ShakeProtocol(), a_min_g=lam, a_max_g=2 * amps[-1],
-                                             workers=ctx.workers, scheduler=ctx.scheduler, progress=line).amplitude_g
+                return threshold(model, f, dyn, ShakeProtocol(), a_min_g=lam, a_max_g=a_max_g,
+                                 workers=ctx.workers, scheduler=ctx.scheduler, progress=line).amplitude_g
+
+        for f in freqs:
+            lo, hi, increment = GRIDS[f]
+            amps = [round(k * lam, 4) for k in np.arange(lo, hi + 1e-9, increment)]
+            groups.append((f"{f:g} Hz", "g", [(a, sine_spec(f, a)) for a in amps]))
+            det[f"{f:g} Hz"] = functools.partial(nominal, f, 2 * amps[-1])  # run once the study file exists
         res = fragility(s.id, arch_structure(s.arch, ctx.config), settings, pert, groups, n, 1,
                         studies_dir(ctx) / f"fragility-{s.id}.h5", workers=ctx.workers, scheduler=ctx.scheduler,
                         resume=True, progress=True, deterministic=det)
@@ -71,7 +83,7 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
         fig = fragility_figure(res)
         fig.savefig(d / f"fragility-{s.id}.png", dpi=120)
         figures.append({"path": f"fragility/fragility-{s.id}.png", "caption": f"{s.id}: fragility curves"})
-        fb = failure_domain(minimised_four_bar(s.arch), "sine0", freqs, workers=1)
+        fb = linkage_domain(minimised_four_bar(s.arch), "sine0", freqs, workers=1)
         for c, f, col in zip(res.curves, freqs, fb.columns):
             four_bar = col.thresholds[0][0] / G if col.thresholds else math.nan
             rows.append({"id": s.id, "freq_hz": f, "lambda_static": lam, "realisations": n,
@@ -81,7 +93,7 @@ def step_fragility(ctx: CampaignContext, d: Path) -> dict:
                          "median_ci_high": c.fit.median_ci[1] if c.fit else math.nan,
                          "deterministic_g": c.deterministic if c.deterministic is not None else math.nan,
                          "four_bar_g": four_bar, "note": c.fit_note})
-    write_csv(d / "fragility.csv", rows)
+    write_csv(d / "fragility.csv", rows, MEDIANS_SCHEMA)
     if len(freqs) > 1:
         fig = Figure(figsize=(6.4, 4.2))
         ax = fig.subplots()

@@ -6,13 +6,9 @@ import math
 
 from dem.common.joints import contact_fraction
 from dem.common.options import (
-    add_contact_law_arguments,
-    add_engine_argument,
-    add_geometry_arguments,
-    add_pier_arguments,
+    add_options,
     can_make_dir,
     contact_law_settings,
-    contact_option,
     default_of,
     geometry_from_args,
     option_used,
@@ -21,11 +17,10 @@ from dem.common.options import (
     study_definition,
     study_path,
     study_stopped,
-    workers_option,
 )
-from dem.core.settings import MAX_FRICTION, MIN_FRICTION, Settings
-from dem.experiments.friction_map.run import catalogue_map, parse_mu_grid
-from dem.experiments.tilt.case import MAP_TILT_TOL
+from dem.core.settings import Settings
+from dem.experiments.friction_map.run import MapSpec, catalogue_map, parse_mu_grid, run
+from dem.experiments.tilt import MAP_TILT_TOL
 from specimens.catalogue import FULL_SCALE_SPANS, Specimen, full_scale_set, select_specimens
 from foundation.errors import ArchdemInputError
 
@@ -59,10 +54,9 @@ def _run(args: argparse.Namespace) -> int:
     specs = _specimens(args)
     mus = parse_mu_grid(args.mu)
 
-    if not (math.isfinite(args.mu_base) and MIN_FRICTION <= args.mu_base <= MAX_FRICTION):
-        raise ArchdemInputError(f"--mu-base must be {MIN_FRICTION:g} to {MAX_FRICTION:g}, got {args.mu_base}")
-    if args.workers is not None and args.workers < 1:
-        raise ArchdemInputError(f"--workers must be >= 1, got {args.workers}")
+    Settings(mu_base=args.mu_base)  # the simulator's range of frictions
+    option_used(args, "refine", len(mus) > 1 or args.refine == 0,
+                "it bisects mu* between the values of a --mu grid; one value has none")
     if not (0 <= args.refine <= 20):
         raise ArchdemInputError(f"--refine must be in 0..20, got {args.refine}")
     if not (math.isfinite(args.tol) and 1e-3 <= args.tol <= 0.5):
@@ -77,33 +71,19 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot:
         can_make_dir(args.plot)
     try:
-        res = catalogue_map(specs, args.config, mus, args.mu_base, path, workers=args.workers,
-                            scheduler=args.scheduler, resume=resume, progress=not args.json, refine=args.refine,
-                            protocol={"kind": "hold", "tol": args.tol},
-                            settings=settings or None,
-                            contact={s.id: contact_fraction(args.contact, s.arch) for s in specs}, piers=piers,
-                            definition=study_definition(args))
+        spec = MapSpec(specs, args.config, mus, args.mu_base, refine=args.refine, protocol={"kind": "hold", "tol": args.tol},
+                       settings=settings or None, contact={s.id: contact_fraction(args.contact, s.arch) for s in specs},
+                       piers=piers)
+        res = run(spec, path, workers=args.workers, scheduler=args.scheduler, resume=resume, progress=not args.json,
+                  definition=study_definition(args))
     except (StudyInterrupted, KeyboardInterrupt) as exc:
         return study_stopped(path, exc)
     if args.plot:
         res.figures(args.plot)
     if args.json:
         print_json(res.to_json())
-        return 0
-
-    def f(v):
-        return "   -  " if v is None else f"{v:6.3f}"
-
-    print(f"friction map ({args.config}, mu_base {args.mu_base:g}, {len(mus)} friction values, "
-          f"{res.rounds} bisection rounds): {res.n_cases} tilts, {res.n_failed} failed, {res.wall_s:.0f} s -> {path}")
-    print(f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP   mu*NA  mu*2bar  lambda_ns  status")
-    for s in res.specimens:
-        th = s.threshold
-        br = f"[{f(th.lo)},{f(th.hi)}]"
-        sh, sd = ("    -", "    -") if s.drawn else (f"{s.arch.Sh:5.2f}", f"{s.arch.Sd:5.2f}")
-        print(f"{s.id:<22} {sh} {sd}  {f(s.mu_star_dem)}  {br:<15} {f(s.analytic.mu_star_lp)}  "
-              f"{f(s.analytic.mu_star_na)}  {f(s.analytic.mu_star_two_bar)}   {s.analytic.lam_no_sliding:6.3f}  "
-              f"{th.status}{'' if th.monotonic else ' (non-monotonic)'}")
+    else:
+        print("\n".join(res.lines(path)))
     return 0
 
 
@@ -111,30 +91,15 @@ def register(sub) -> None:
     mus = default_of(catalogue_map, "mus")
     p = sub.add_parser("map", help="friction-threshold map: DEM tilt lambda(mu), mode(mu) and mu* per specimen")
     p.add_argument("--specimens", default="all", help="all or comma-separated ids (default all)")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(catalogue_map, "config"))
     p.add_argument("--mu", default=mus, help="joint friction grid START:STOP:STEP or a,b,c "
                    f"(default {mus}, {len(parse_mu_grid(mus))} values)")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=default_of(catalogue_map, "mu_base"),
-                   help=f"block-base friction (default {default_of(catalogue_map, 'mu_base'):g})")
-    p.add_argument("--contact", type=contact_option, default=default_of(catalogue_map, "contact"), metavar="C|calibrated",
-                   help="effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate) "
-                        f"(default {default_of(catalogue_map, 'contact'):g}: the full joint)")
     p.add_argument("--refine", type=int, default=default_of(catalogue_map, "refine"),
                    help=f"bisection steps on mu* after the grid (default {default_of(catalogue_map, 'refine')})")
     p.add_argument("--tol", type=float, default=MAP_TILT_TOL,
                    help=f"relative lambda tolerance of each tilt (default {MAP_TILT_TOL:g})")
-    p.add_argument("--workers", type=workers_option, default=None, help="local worker processes (default: all cores)")
-    add_engine_argument(p)
-    add_contact_law_arguments(p)
-    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (instead of local workers)")
-    p.add_argument("--resume", default=None, metavar="STUDY.h5", help="continue an interrupted map study")
-    p.add_argument("--out", default=None, metavar="STUDY.h5", help="new study file (default runs/map/map-CONFIG[-N].h5)")
     p.add_argument("--full-scale", dest="full_scale", action="store_true",
                    help="use the full-scale parametric set (spans "
                         f"{'/'.join(f'{s:g}' for s in FULL_SCALE_SPANS)} m, "
                         f"{default_of(catalogue_map, 'n_voussoirs')} voussoirs per side)")
-    p.add_argument("--plot", default=None, metavar="DIR", help="write the map figures (PNG) into DIR")
-    add_pier_arguments(p)
-    add_geometry_arguments(p)
-    p.add_argument("--json", action="store_true", help="print JSON per specimen")
+    add_options(p, "map", **{k: default_of(catalogue_map, k) for k in ("config", "mu_base", "contact")})
     p.set_defaults(func=_run)

@@ -53,20 +53,14 @@ import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Mapping, Sequence
+from typing import Any, Callable, ClassVar, Mapping, Sequence
 
 import numpy as np
 
 from analytic.search import midpoint, search, wide
 from dem.core.settings import MAX_FRICTION, MIN_FRICTION
-from dem.experiments.tilt.case import (
-    DEM_CASE,
-    MAP_PROTOCOL,
-    MAP_TILT_TOL,
-    make_case,
-    scaled_protocol,
-)
-from dem.experiments.tilt.run import RC_REF
+from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.tilt import DEM_CASE, MAP_PROTOCOL, MAP_TILT_TOL, RC_REF, make_case, scaled_protocol
 from specimens.blocks import DEFAULT_VOUSSOIRS, check_contact, discretise
 from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import REFERENCE_MU_BASE
@@ -294,8 +288,24 @@ class MapPoint:
 
 
 @dataclass
-class SpecimenMap:
-    """The map of one specimen: DEM points, DEM threshold, analytic curves."""
+class SpecimenMap(Result):
+    """The map of one specimen: DEM points, DEM threshold, analytic curves. Its row of the map's summary
+    table is declared once in ``SCHEMA``, the rows of its tilts in ``POINTS_SCHEMA``."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("Sh", "float"), Column("Sd", "float"), Column("span_m", "float", "m"),
+        Column("config", "str"), Column("mu_base", "float"), Column("mu_star_dem", "float"),
+        Column("mu_star_dem_lo", "float"), Column("mu_star_dem_hi", "float"), Column("dem_status", "str"),
+        Column("dem_monotonic", "bool"), Column("mu_star_lp", "float"), Column("mu_star_na", "float"),
+        Column("mu_star_two_bar", "float"), Column("mu_star_two_bar_continuous", "float"),
+        Column("lambda_no_sliding", "float"), Column("lambda_kinematic", "float"), Column("lambda_continuous", "float"),
+        Column("lambda_two_bar_frictionless", "float"), Column("seconds_na", "float", "s"), Column("n_tilts", "int"),
+        Column("n_failed", "int"),
+    ))
+    POINTS_SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("mu", "float"), Column("lambda", "float"), Column("mode", "str"), Column("kind", "str"),
+        Column("n_sims", "int"), Column("wall_s", "float", "s"), Column("joints", "str"), Column("error", "str"),
+    ))
 
     id: str
     arch: PointedArch
@@ -319,6 +329,40 @@ class SpecimenMap:
         if self.drawn:
             return {"Sh": None, "Sd": None, "span": None}
         return {"Sh": self.arch.Sh, "Sd": self.arch.Sd, "span": self.arch.span}
+
+    def rows(self) -> list[dict]:
+        """Its row of the map's summary table (``SCHEMA``)."""
+        a, th = self.analytic, self.threshold
+        shape = {k: None if v is None else round(v, 6) for k, v in self.shape().items()}
+        return [{
+            "id": self.id, "Sh": shape["Sh"], "Sd": shape["Sd"], "span_m": shape["span"],
+            "config": self.config, "mu_base": self.mu_base,
+            "mu_star_dem": self.mu_star_dem, "mu_star_dem_lo": th.lo, "mu_star_dem_hi": th.hi,
+            "dem_status": th.status, "dem_monotonic": th.monotonic,
+            "mu_star_lp": a.mu_star_lp, "mu_star_na": a.mu_star_na, "mu_star_two_bar": a.mu_star_two_bar,
+            "mu_star_two_bar_continuous": a.mu_star_two_bar_continuous,
+            "lambda_no_sliding": a.lam_no_sliding, "lambda_kinematic": a.lam_kinematic,
+            "lambda_continuous": a.lam_continuous, "lambda_two_bar_frictionless": a.lam_two_bar_0,
+            "seconds_na": round(a.seconds_na, 1),
+            "n_tilts": len(self.points), "n_failed": sum(p.mode == "failed" for p in self.points),
+        }]
+
+    def point_rows(self) -> list[dict]:
+        """The rows of its tilts (``POINTS_SCHEMA``)."""
+        return [{"id": self.id, "mu": p.mu, "lambda": _finite_or_none(p.lam), "mode": p.mode, "kind": p.kind,
+                 "n_sims": p.n_sims, "wall_s": p.wall_s, "joints": " ".join(f"{k}:{v}" for k, v in p.joints.items()),
+                 "error": p.error} for p in self.points]
+
+    def line(self) -> str:
+        """Its line of the table ``archdem map`` prints (:meth:`MapResult.lines`)."""
+        def f(v):
+            return "   -  " if v is None else f"{v:6.3f}"
+
+        th, a = self.threshold, self.analytic
+        br = f"[{f(th.lo)},{f(th.hi)}]"
+        sh, sd = ("    -", "    -") if self.drawn else (f"{self.arch.Sh:5.2f}", f"{self.arch.Sd:5.2f}")
+        return (f"{self.id:<22} {sh} {sd}  {f(self.mu_star_dem)}  {br:<15} {f(a.mu_star_lp)}  {f(a.mu_star_na)}  "
+                f"{f(a.mu_star_two_bar)}   {a.lam_no_sliding:6.3f}  {th.status}{'' if th.monotonic else ' (non-monotonic)'}")
 
     def to_json(self) -> dict:
         """Per-specimen JSON of ``archdem map --json``."""
@@ -358,31 +402,22 @@ class MapResult:
         return [s.to_json() for s in self.specimens]
 
     def to_rows(self, kind: str = "summary") -> list[dict]:
-        """Flat rows for CSV tables: ``summary`` (one per specimen) or ``points`` (one per tilt)."""
+        """Flat rows for CSV tables: ``summary`` (one per specimen, :attr:`SpecimenMap.SCHEMA`) or ``points``
+        (one per tilt, :attr:`SpecimenMap.POINTS_SCHEMA`)."""
         if kind == "summary":
-            rows = []
-            for s in self.specimens:
-                a, th = s.analytic, s.threshold
-                shape = {k: None if v is None else round(v, 6) for k, v in s.shape().items()}
-                rows.append({
-                    "id": s.id, "Sh": shape["Sh"], "Sd": shape["Sd"], "span_m": shape["span"],
-                    "config": s.config, "mu_base": s.mu_base,
-                    "mu_star_dem": s.mu_star_dem, "mu_star_dem_lo": th.lo, "mu_star_dem_hi": th.hi,
-                    "dem_status": th.status, "dem_monotonic": th.monotonic,
-                    "mu_star_lp": a.mu_star_lp, "mu_star_na": a.mu_star_na, "mu_star_two_bar": a.mu_star_two_bar,
-                    "mu_star_two_bar_continuous": a.mu_star_two_bar_continuous,
-                    "lambda_no_sliding": a.lam_no_sliding, "lambda_kinematic": a.lam_kinematic,
-                    "lambda_continuous": a.lam_continuous, "lambda_two_bar_frictionless": a.lam_two_bar_0,
-                    "seconds_na": round(a.seconds_na, 1),
-                    "n_tilts": len(s.points), "n_failed": sum(p.mode == "failed" for p in s.points),
-                })
-            return rows
+            return [r for s in self.specimens for r in s.rows()]
         if kind == "points":
-            return [{"id": s.id, "mu": p.mu, "lambda": _finite_or_none(p.lam), "mode": p.mode, "kind": p.kind,
-                     "n_sims": p.n_sims, "wall_s": p.wall_s,
-                     "joints": " ".join(f"{k}:{v}" for k, v in p.joints.items()), "error": p.error}
-                    for s in self.specimens for p in s.points]
+            return [r for s in self.specimens for r in s.point_rows()]
         raise ArchdemInputError(f"row kind must be 'summary' or 'points', got {kind!r}")
+
+    def lines(self, path: str | os.PathLike | None = None) -> list[str]:
+        """The map as ``archdem map`` prints it: the study (``path``: its file as the user named it, default
+        :attr:`study_path`), then a line per specimen."""
+        return [f"friction map ({self.config}, mu_base {self.mu_base:g}, {len(self.mus)} friction values, "
+                f"{self.rounds} bisection rounds): {self.n_cases} tilts, {self.n_failed} failed, {self.wall_s:.0f} s "
+                f"-> {self.study_path if path is None else path}",
+                f"{'id':<22} {'Sh':>5} {'Sd':>5}  mu*DEM  bracket         mu*LP   mu*NA  mu*2bar  lambda_ns  status",
+                *(s.line() for s in self.specimens)]
 
     def figures(self, out_dir: str | os.PathLike) -> list[Path]:
         """Write the map figures into ``out_dir`` (see :mod:`dem.experiments.friction_map.figure`); their paths."""
@@ -519,6 +554,40 @@ def catalogue_map(specimens, config: str = "glued", mus: Sequence[float] | str =
     recs = [by_key[case_key(c)] for c in all_cases if case_key(c) in by_key]
     return MapResult(Path(out_path), config, float(mu_base), grid, smaps, len(recs), sum(not r.ok for r in recs),
                      time.perf_counter() - t0, [r.wall for r in recs if r.ok], rounds, definitions())
+
+
+@dataclass(frozen=True)
+class MapSpec:
+    """What a friction map runs: :func:`catalogue_map`'s arguments that make its answer (the specimens, their
+    configuration, the friction grid, the base friction, the bisection rounds, the tilt protocol and settings
+    overrides, the voussoirs, the time scale, the contact fraction, the piers, the joints' law, the references
+    without dilatancy); where it is stored and how it is run are :func:`run`'s."""
+
+    specimens: Any
+    config: str = "glued"
+    mus: Sequence[float] | str = "0.3:1.5:0.1"
+    mu_base: float = REFERENCE_MU_BASE
+    refine: int = 3
+    protocol: dict | None = None
+    settings: dict | None = None
+    n_voussoirs: int = DEFAULT_VOUSSOIRS
+    time_scale: float | str = "auto"
+    contact: float | Mapping[str, float] = 1.0
+    piers: Any = None
+    law: Mapping[str, dict] | None = None
+    non_associative: bool = True
+
+
+def run(spec: MapSpec, out_path: str | os.PathLike = "runs/map/map.h5", workers: int | None = None,
+        scheduler: str | None = None, resume: bool = False, progress: bool = True, definition: dict | None = None,
+        func: Callable[[dict], dict] = DEM_CASE, extra: dict | None = None) -> MapResult:
+    """The friction map of ``spec`` into the study file ``out_path`` (:func:`catalogue_map`, whose other
+    arguments these are)."""
+    return catalogue_map(spec.specimens, spec.config, spec.mus, spec.mu_base, out_path, workers=workers,
+                         scheduler=scheduler, resume=resume, progress=progress, refine=spec.refine,
+                         protocol=spec.protocol, settings=spec.settings, func=func, n_voussoirs=spec.n_voussoirs,
+                         time_scale=spec.time_scale, extra=extra, contact=spec.contact, piers=spec.piers, law=spec.law,
+                         definition=definition, non_associative=spec.non_associative)
 
 
 def definitions() -> dict:

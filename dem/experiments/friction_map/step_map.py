@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
-from dem.experiments.friction_map.run import LP_MU_TOL, catalogue_map
+from dem.experiments.friction_map.run import LP_MU_TOL, MapSpec, SpecimenMap, run
 from specimens.constants import REFERENCE_MU_BASE
 
 QUICK_MAP = ("Sh02-Sd015", "Sh1-Sd025")  # quick map: the thin/round-ish and the thick/sharp end
@@ -24,15 +24,14 @@ def map_plan(ctx: CampaignContext) -> tuple[list, str, int]:
 def step_map(ctx: CampaignContext, d: Path) -> dict:
     """Rocking/sliding friction threshold of every specimen (coarse grid when quick)."""
     specs, mus, refine = map_plan(ctx)
-    res = catalogue_map(specs, ctx.config, mus, REFERENCE_MU_BASE, studies_dir(ctx) / "map.h5",
-                        workers=ctx.workers, scheduler=ctx.scheduler, resume=(studies_dir(ctx) / "map.h5").exists(),
-                        progress=True,
-                        refine=refine,
-                        settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None,
-                        contact={s.id: ctx.contact_of(s) for s in specs},
-                        law={s.id: ctx.law_of(s) for s in specs} if ctx.joints else None)
-    write_csv(d / "map.csv", res.to_rows("summary"))
-    write_csv(d / "map_points.csv", res.to_rows("points"))
+    spec = MapSpec(specs, ctx.config, mus, REFERENCE_MU_BASE, refine=refine,
+                   settings={"engine": ctx.engine} if ctx.engine != "pybullet" else None,
+                   contact={s.id: ctx.contact_of(s) for s in specs},
+                   law={s.id: ctx.law_of(s) for s in specs} if ctx.joints else None)
+    path = studies_dir(ctx) / "map.h5"
+    res = run(spec, path, workers=ctx.workers, scheduler=ctx.scheduler, resume=path.exists(), progress=True)
+    write_csv(d / "map.csv", res.to_rows("summary"), SpecimenMap.SCHEMA)
+    write_csv(d / "map_points.csv", res.to_rows("points"), SpecimenMap.POINTS_SCHEMA)
     figs = res.figures(d / "figures")
     rows = res.to_rows("summary")
     findings = []

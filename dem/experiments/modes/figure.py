@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from dem.experiments.shake.figure import _save
+from dem.common.figures import save_figure
 
 
 def mode_shapes_figure(structure, res, n: int = 6, title: str = ""):
@@ -40,4 +40,4 @@ def mode_shapes_figure(structure, res, n: int = 6, title: str = ""):
 
 
 def save_mode_shapes(structure, res, path, title: str = "") -> None:
-    _save(mode_shapes_figure(structure, res, title=title), path)
+    save_figure(mode_shapes_figure(structure, res, title=title), path)

@@ -5,9 +5,9 @@ from __future__ import annotations
 import argparse
 import math
 
-from analytic.compliant.modes import KS_OVER_KN, POISSON, SPRINGS, ks_over_kn, modes
+from analytic.compliant.modes import POISSON, SPRINGS, ks_over_kn, modes
 from dem.common.options import (
-    add_arch_arguments,
+    add_options,
     arch_from_args,
     block_from_args,
     default_of,
@@ -89,21 +89,11 @@ def _run(args: argparse.Namespace) -> int:
 def register(sub) -> None:
     p = sub.add_parser("modes", help="natural frequencies and mode shapes on compliant joints",
                        description=__doc__.splitlines()[0])
-    add_arch_arguments(p)
-    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
-                   help="a rectangular block of half-width B and half-height H [m] instead of an arch")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(discretise, "config"))
-    p.add_argument("--kn", type=float, default=None, help="normal joint stiffness per unit area [Pa/m]")
-    p.add_argument("--youngs", type=float, default=None, metavar="E_PA",
-                   help="or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints")
+    add_options(p, "modes")
     p.add_argument("--poisson", type=float, default=POISSON,
                    help=f"the blocks' Poisson's ratio, for ks = (5/6) G / length with --youngs (default {POISSON:g})")
-    p.add_argument("--ks", type=float, default=None,
-                   help=f"shear joint stiffness per unit area [Pa/m] (default {KS_OVER_KN:.3f} kn)")
     p.add_argument("--springs", choices=tuple(SPRINGS), default=default_of(modes, "springs"),
                    help="a joint's springs at its contact's two ends, as the DEM's corner contacts (default), "
                         "or spread over it")
     p.add_argument("--count", type=int, default=80, help="modes printed (default 80)")
-    p.add_argument("--plot", default=None, metavar="FILE.png", help="the first mode shapes drawn on the structure")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=_run)

@@ -2,8 +2,9 @@
 (docs/physics/modes.md)."""
 from __future__ import annotations
 
-import json
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 from analytic.compliant.modes import modes
 from dem.common.campaign import CampaignContext, write_csv
@@ -11,11 +12,36 @@ from dem.common.joints import STUDY_JOINTS
 from dem.core.contact import normal_stiffness, study_joints
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
+from dem.experiments.contract import Column, Result, Schema
 from dem.experiments.modes.figure import save_mode_shapes
 from specimens.blocks import discretise
 
 #: Frequencies listed per specimen in the table (all 3 per body are in the CSV's JSON column).
 MODES_LISTED = 6
+
+
+@dataclass(frozen=True)
+class SpecimenModes(Result):
+    """One specimen's natural frequencies on its joints: its row of the modes table, declared once."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("Sh", "float"), Column("Sd", "float"), Column("kn_Pa_per_m", "float", "Pa/m"),
+        *(Column(f"f{k}_Hz", "float", "Hz") for k in range(1, MODES_LISTED + 1)),
+        Column("unstable", "int"), Column("all_Hz", "json", "Hz"),
+    ))
+
+    id: str
+    Sh: float
+    Sd: float
+    kn: float  # the joints' normal stiffness [Pa/m]
+    frequencies_hz: tuple[float, ...]
+    unstable: int  # modes gravity makes unstable, not counted
+
+    def rows(self) -> list[dict]:
+        f = self.frequencies_hz
+        return [{"id": self.id, "Sh": round(self.Sh, 3), "Sd": round(self.Sd, 3), "kn_Pa_per_m": self.kn,
+                 **{f"f{k + 1}_Hz": f[k] if k < len(f) else None for k in range(MODES_LISTED)},
+                 "unstable": self.unstable, "all_Hz": [round(x, 3) for x in f]}]
 
 
 def step_modes(ctx: CampaignContext, d: Path) -> dict:
@@ -28,17 +54,15 @@ def step_modes(ctx: CampaignContext, d: Path) -> dict:
         asm = discretise(s.arch, config=ctx.config, **({"contact": c} if c != 1.0 else {}))
         kn = normal_stiffness(Settings(**(ctx.law_of(s) or study_joints(s.id))), from_assembly(asm))
         res = modes(asm, kn)
-        f = res.frequencies_hz
-        rows.append({"id": s.id, "Sh": round(s.arch.Sh, 3), "Sd": round(s.arch.Sd, 3), "kn_Pa_per_m": kn,
-                     **{f"f{k + 1}_Hz": float(f[k]) for k in range(min(MODES_LISTED, len(f)))},
-                     "unstable": res.unstable, "all_Hz": json.dumps([round(float(x), 3) for x in f])})
+        rows += SpecimenModes(s.id, s.arch.Sh, s.arch.Sd, kn, tuple(float(x) for x in res.frequencies_hz),
+                              res.unstable).rows()
         sh = round(s.arch.Sh, 3)
         if sh not in drawn:
             drawn.add(sh)
             png = d / f"modes_{s.id}.png"
             save_mode_shapes(asm, res, png, title=f"{s.id}, k_n {kn:.3g} Pa/m")
             figures.append({"path": f"modes/{png.name}", "caption": f"{s.id}: the first mode shapes"})
-    write_csv(d / "modes.csv", rows)
+    write_csv(d / "modes.csv", rows, SpecimenModes.SCHEMA)
     lo = min(r["f1_Hz"] for r in rows)
     hi = max(r["f1_Hz"] for r in rows)
     return {

@@ -6,22 +6,128 @@ record is collapse or not and the peak displacement of the equivalent oscillator
 with ``d_C`` the horizontal displacement of the bodies' mass centroid (the control point of the
 capacity curve). The verdict follows the codes' rule for non-linear dynamic analysis of a local
 mechanism: no record reaches ``d0*`` (nor collapses) and the mean peak is at most ``d_u*``.
+
+What a record file holds (``archdem record``) is :func:`run` of a :class:`RecordSpec`, a
+:class:`RecordSummary`; the record step's row, a recorded motion scaled until collapse, is a
+:class:`RecordThreshold`. Each declares its table once (:class:`dem.experiments.contract.Result`).
 """
 from __future__ import annotations
 
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
+from analytic.motions.records import load_record
 from dem.core.settings import Settings, dynamics_settings
-from dem.experiments.shake.run import ShakeProtocol, shake
-from foundation.processes import pool_worker_init
+from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.shake import ShakeProtocol, shake
+from specimens.constants import G
+from foundation.processes import worker_pool
+
+
+def _row(result) -> dict:
+    """A one-row result's row: its fields named as its schema's columns."""
+    return {c.name: getattr(result, c.name) for c in result.SCHEMA.columns}
 
 
 @dataclass(frozen=True)
-class RecordRun:
+class RecordSpec:
+    """A record file to read: ``path``, its ``format`` (``auto``: detect) and ``units`` (None: from the file)."""
+
+    path: str
+    format: str = "auto"
+    units: str | None = None
+
+
+@dataclass(frozen=True)
+class RecordSummary(Result):
+    """What a record file holds: name, sampling [s], duration [s] and PGA (in g and m/s^2, at ``t_pga`` [s])."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("file", "str"), Column("name", "str"), Column("format", "str"), Column("units", "str"),
+        Column("units_from", "str"), Column("npts", "int"), Column("dt", "float", "s"),
+        Column("duration", "float", "s"), Column("pga_g", "float", "g"), Column("pga_ms2", "float", "m/s^2"),
+        Column("t_pga", "float", "s"),
+    ))
+
+    file: str
+    name: str
+    format: str
+    units: str
+    units_from: str
+    npts: int
+    dt: float
+    duration: float
+    pga_g: float
+    pga_ms2: float
+    t_pga: float
+
+    def rows(self) -> list[dict]:
+        return [_row(self)]
+
+    def lines(self) -> list[str]:
+        """The text of ``archdem record``."""
+        return [f"file      {self.file}", f"name      {self.name}",
+                f"format    {self.format}   units {self.units} ({self.units_from})",
+                f"npts      {self.npts}   dt {self.dt:g} s   duration {self.duration:.3f} s",
+                f"PGA       {self.pga_g:.4f} g = {self.pga_ms2:.4f} m/s^2 at t = {self.t_pga:.3f} s"]
+
+
+def run(spec: RecordSpec) -> RecordSummary:
+    """Read ``spec``'s record file (:func:`analytic.motions.records.load_record`) and say what it holds."""
+    rec = load_record(spec.path, spec.format, spec.units)
+    m = rec.motion
+    k = int(np.argmax(np.abs(m.values)))
+    return RecordSummary(str(spec.path), m.name, rec.format, rec.units, rec.units_from, len(m.values), m.dt,
+                         m.duration, m.pga / G, m.pga, k * m.dt)
+
+
+@dataclass(frozen=True)
+class RecordThreshold(Result):
+    """One row of the record step: the least collapsing PGA [g] of a record's window on one specimen
+    (NaN when nothing up to the scan's top collapsed), against the record's own PGA and the static lambda."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("record", "str"), Column("window_s", "str", "s"),
+        Column("pga_record_g", "float", "g"), Column("lambda_static", "float"), Column("collapse_pga_g", "float", "g"),
+        Column("scale_factor", "float"), Column("ratio_to_static", "float"), Column("mode", "str"),
+        Column("n_sims", "int"),
+    ))
+
+    id: str
+    record: str
+    window_s: str  # "t0-t1" [s]
+    pga_record_g: float
+    lambda_static: float
+    collapse_pga_g: float
+    scale_factor: float  # the collapsing PGA / the record's
+    ratio_to_static: float  # the collapsing PGA / lambda
+    mode: str
+    n_sims: int
+
+    @classmethod
+    def of(cls, sid: str, record: str, window: tuple[float, float], pga_record: float, lam: float,
+           amplitude_g: float | None, mode: str, n_sims: int) -> "RecordThreshold":
+        """The row of a threshold search's answer ``amplitude_g`` [g] (None: no collapse) on a record of PGA
+        ``pga_record`` [m/s^2] cut to ``window`` [s]."""
+        nan = float("nan")
+        a = amplitude_g
+        return cls(sid, record, f"{window[0]:.2f}-{window[1]:.2f}", pga_record / G, lam, nan if a is None else a,
+                   nan if a is None else a * G / pga_record, nan if a is None else a / lam, mode or "", n_sims)
+
+    def rows(self) -> list[dict]:
+        return [_row(self)]
+
+
+@dataclass(frozen=True)
+class RecordRun(Result):
     """One matched record on the DEM: ``peak_d_star`` [m] (up to collapse), ``collapsed``, ``mode``."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("record", "str"), Column("scale", "float"), Column("pga", "float", "m/s^2"), Column("collapsed", "bool"),
+        Column("mode", "str"), Column("peak_d_star", "float", "m"), Column("wall_s", "float", "s"),
+    ))
 
     record: str
     scale: float
@@ -31,9 +137,11 @@ class RecordRun:
     peak_d_star: float
     wall_s: float
 
+    def rows(self) -> list[dict]:
+        return [_row(self)]
+
     def describe(self) -> dict:
-        return {"record": self.record, "scale": self.scale, "pga": self.pga, "collapsed": self.collapsed,
-                "mode": self.mode, "peak_d_star": self.peak_d_star, "wall_s": self.wall_s}
+        return self.to_json()[0]
 
 
 def _one(job) -> RecordRun:
@@ -54,7 +162,7 @@ def run_records(target, motions, e_star: float, settings: Settings | None = None
     if workers <= 1 or len(jobs) <= 1:
         return [_one(j) for j in jobs]
 
-    with ProcessPoolExecutor(min(workers, len(jobs)), initializer=pool_worker_init) as ex:
+    with worker_pool(min(workers, len(jobs))) as ex:
         return list(ex.map(_one, jobs))
 
 

@@ -13,9 +13,9 @@ from dem.common.campaign import CampaignContext, write_csv
 from dem.core.model import as_model
 from dem.core.progress import terminal
 from dem.core.settings import Settings
-from dem.experiments.shake.run import ShakeProtocol
-from dem.experiments.shake.thresholds import static_onset, threshold
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
+from dem.experiments.record.run import RecordThreshold
+from dem.experiments.shake import ShakeProtocol, static_onset, threshold
+from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 
 RECORD_FILE = "RSN6_IMPVALL.I_I-ELC180.AT2"  # El Centro 1940, the shared record set
 
@@ -70,13 +70,8 @@ def step_record(ctx: CampaignContext, d: Path) -> dict:
             r = threshold(model, 1.0, ctx.dynamics_of(s), ShakeProtocol(), a_min_g=lam, a_max_g=4 * lam, scan_ratio=1.25,
                           tol=0.02 if ctx.quick else 0.01, workers=ctx.workers, scheduler=ctx.scheduler,
                           motion_fn=RecordAtPGA(str(path), t0, t1), progress=line)
-        a = r.amplitude_g
-        rows.append({"id": s.id, "record": RECORD_FILE, "window_s": f"{t0:.2f}-{t1:.2f}", "pga_record_g": full.pga / G,
-                     "lambda_static": lam, "collapse_pga_g": a if a is not None else float("nan"),
-                     "scale_factor": (a * G / full.pga) if a is not None else float("nan"),
-                     "ratio_to_static": (a / lam) if a is not None else float("nan"), "mode": r.mode or "",
-                     "n_sims": r.n_sims})
-    write_csv(d / "record.csv", rows)
+        rows += RecordThreshold.of(s.id, RECORD_FILE, (t0, t1), full.pga, lam, r.amplitude_g, r.mode, r.n_sims).rows()
+    write_csv(d / "record.csv", rows, RecordThreshold.SCHEMA)
     found = [r for r in rows if math.isfinite(r["collapse_pga_g"])]
     findings = [f"{r['id']}: the El Centro 1940 window collapses the arch at PGA {r['collapse_pga_g']:.3f} g "
                 f"(x{r['scale_factor']:.2f} the record, {r['ratio_to_static']:.2f} x the static lambda)." for r in found]

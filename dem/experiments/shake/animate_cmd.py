@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import default_of
+from dem.common.options import add_options, default_of
 from dem.experiments.shake.animation import animate
 
 
@@ -16,7 +16,7 @@ def _run_animate(args: argparse.Namespace) -> int:
 def register(sub) -> None:
     r = sub.add_parser("animate", help="animation of a tilt or shake run file (gif, or mp4 with ffmpeg)")
     r.add_argument("run", help="run file (.h5) written by `archdem tilt` or `archdem shake`")
-    r.add_argument("--out", required=True, help="FILE.gif or FILE.mp4 (never overwritten)")
+    add_options(r, "animate")
     r.add_argument("--fps", type=int, default=default_of(animate, "fps"),
                    help=f"frames per second (default {default_of(animate, 'fps')})")
     r.add_argument("--frames", type=int, default=default_of(animate, "max_frames"),

@@ -45,7 +45,7 @@ def read_run(path: str | Path) -> dict:
                          f"{'collapse' if s['collapsed'] else 'survival'}"}
     if fmt == "archdem-tilt-1":
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-        from dem.experiments.tilt.file import load_result
+        from dem.experiments.tilt import load_result
 
         r = load_result(path)
         sim = r.collapse or r.stable

@@ -9,10 +9,7 @@ from dataclasses import replace
 from analytic.rocking.domain import failure_domain
 from dem.common.joints import contact_fraction
 from dem.common.options import (
-    CONTACT_LAW_DESTS,
-    add_arch_arguments,
-    add_contact_law_arguments,
-    add_dynamics_dt_argument,
+    add_options,
     arch_from_args,
     check_density,
     contact_law_settings,
@@ -23,16 +20,21 @@ from dem.common.options import (
     parse_grid,
     piers_from_args,
     print_json,
-    workers_option,
 )
-from dem.core.engines import available_engines, check_engine
+from dem.core.engines import check_engine
 from dem.core.progress import terminal
 from dem.core.settings import DYNAMICS_ENGINE
-from dem.experiments.shake.domain import analytic_domains, dem_failure_domain
+from dem.experiments.shake.domain import (
+    analytic_domain_json,
+    analytic_domain_lines,
+    analytic_domains,
+    dem_domain_json,
+    dem_domain_lines,
+    dem_failure_domain,
+)
 from dem.experiments.shake.step_shake import SHAKE_FREQS
 from specimens.blocks import DEFAULT_DENSITY, discretise
 from specimens.catalogue import SPECIMEN_WIDTH
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from foundation.errors import ArchdemInputError
 from foundation.io import MAX_GRID_POINTS
 
@@ -59,6 +61,8 @@ def build_mechanism(args: argparse.Namespace):
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.rocking import linkage
 
+    option_used(args, "layout", args.block is None and args.model in (None, "four-bar"),
+                "it places the hinges of the four-bar (--model four-bar)")
     density = check_density(args.density) if args.density is not None else DEFAULT_DENSITY
     if args.block is not None:
         # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
@@ -68,10 +72,6 @@ def build_mechanism(args: argparse.Namespace):
             raise ArchdemInputError("give either --block B H or an arch, not both")
         if args.model not in (None, "block"):
             raise ArchdemInputError("--block goes with --model block")
-        if args.contact is not None:
-            raise ArchdemInputError("--contact applies to the joints of an arch, not to --block")
-        if piers_from_args(args) is not None:
-            raise ArchdemInputError("--pier-* options set an arch on piers, not a --block")
         b, h = args.block
         width = args.width if args.width is not None else SPECIMEN_WIDTH
         return f"block b={b:g} h={h:g}", RockingBlock(b, h, -1, density, width)
@@ -116,11 +116,9 @@ def _discrete_four_bar(args: argparse.Namespace, arch, model: str, density: floa
     return mechanism_four_bar(discretise(arch, **kw), direction=1)
 
 
-def add_linkage_arguments(p: argparse.ArgumentParser) -> None:
-    """The options ``domain`` and ``rock`` share: the arch or block, the linkage, its input."""
-    add_arch_arguments(p)
-    p.add_argument("--block", nargs=2, type=float, metavar=("B", "H"), default=None,
-                   help="rectangular block of half-width B and half-height H [m]")
+def add_linkage_arguments(p: argparse.ArgumentParser, command: str, **defaults) -> None:
+    """The options ``domain`` and ``rock`` share: the table's (the arch or block), the linkage, its input."""
+    add_options(p, command, **defaults)
     p.add_argument("--model", choices=("four-bar", "two-bar", "block"), default=None, help="linkage (default four-bar)")
     p.add_argument("--layout", default="minimised",
                    help="four-bar hinge layout: minimised (continuous ring) | discrete (minimum mechanism of the "
@@ -129,23 +127,14 @@ def add_linkage_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--input", choices=("sine", "sine0", "A", "B"), default="sine",
                    help="phased one-cycle sine (starts at the onset), plain one-cycle sine, pulse A or B")
     p.add_argument("--restitution", default="auto", help="'auto' (momentum balance) or an energy restitution in [0, 1]")
-    p.add_argument("--json", action="store_true", help="print JSON")
-    p.add_argument("--plot", default=None, metavar="FILE.png", help="write a figure (never overwrites)")
 
 
 def _run_domain(args: argparse.Namespace) -> int:
     if args.engine != "analytic":
         return int(dem_domain(args) or 0)
-    option_used(args, "dt", False, "it is the DEM's time step (--engine dem or a named engine)")
-    if args.scheduler:
-        raise ArchdemInputError("--scheduler runs the DEM's domain (--engine dem); the analytic one runs here")
-    if any(getattr(args, k) is not None for k in CONTACT_LAW_DESTS):
-        raise ArchdemInputError("--contact-law, --kn, --youngs, --damping-* and --joints are the DEM's joints (--engine dem)")
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from analytic.rocking.impact import post_impact
 
-    for dest in ("config", "mu_joint", "mu_base"):
-        option_used(args, dest, False, "it is the DEM's (--engine dem)")
     rest = restitution_option(args.restitution)
     pulses = args.input in ("A", "B")
     if pulses and args.freq is not None:
@@ -174,18 +163,9 @@ def _run_domain(args: argparse.Namespace) -> int:
 
         plot_domain(dom, args.plot, title=f"{label}: {mech.label}, input {args.input}")
     if args.json:
-        hinges = {"hinges": mech.summary()["hinges"]} if "hinges" in mech.summary() else {}
-        print_json({"restitution": e, "omega0": dom.omega0, "phi_cr": dom.phi_cr, "lambda": dom.lam, **hinges,
-                    "points": dom.points(), "bands": dom.bands()})
+        print_json(analytic_domain_json(mech, dom, e))
         return 0
-    unit = "Hz" if dom.axis == "frequency" else "s"
-    print(f"{label}  {mech.label}  lambda {dom.lam:.4f}  omega0 {dom.omega0:.4g} rad/s  phi_cr {dom.phi_cr:.4g} rad  "
-          f"e {e:.4f}")
-    for c in dom.columns:
-        th = ", ".join(f"{a / 9.81:.4f} g ({m})" for a, m in c.thresholds) or "none below a_max"
-        print(f"  {c.x:8.4g} {unit}: collapse from {th}")
-    if args.plot:
-        print(f"figure: {args.plot}")
+    print("\n".join(analytic_domain_lines(label, mech, dom, e) + ([f"figure: {args.plot}"] if args.plot else [])))
     return 0
 
 
@@ -193,7 +173,7 @@ def register(sub) -> None:
     p = sub.add_parser("domain", help="failure domain of a rocking linkage (collapse amplitude vs frequency/duration)",
                        description="Failure domain: amplitude scan and bisection at every frequency (sines) or "
                                    "duration (pulses), all collapse/survival bands.")
-    add_linkage_arguments(p)
+    add_linkage_arguments(p, "domain", config=default_of(dem_failure_domain, "config"))
     p.add_argument("--freq", default=None, help=f"frequencies [Hz]: '0.5,1,2' or 'start:stop:step', at most {MAX_GRID_POINTS} (default "
                    f"{SINE_FREQS}; --engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})")
     p.add_argument("--durations", default=None, help=f"pulse durations t_i [s] (default {PULSE_DURATIONS})")
@@ -204,19 +184,6 @@ def register(sub) -> None:
                    help=f"amplitudes in the scan (default {default_of(failure_domain, 'n_scan')})")
     p.add_argument("--tol", type=float, default=default_of(failure_domain, "tol"),
                    help=f"relative bisection tolerance (default {default_of(failure_domain, 'tol'):g})")
-    p.add_argument("--workers", type=workers_option, default=None, help="processes (default: all cores)")
-    p.add_argument("--scheduler", default=None, help="Dask scheduler address tcp://HOST:PORT (with --engine dem)")
-    p.add_argument("--engine", choices=("analytic", "dem", *available_engines()), default="analytic",
-                   help=f"analytic linkage, or the DEM: 'dem' runs the shakes' default engine ({DYNAMICS_ENGINE}), "
-                        "or name one")
-    add_dynamics_dt_argument(p, "DEM: ")
-    p.add_argument("--config", choices=("glued", "free"), default=default_of(dem_failure_domain, "config"),
-                   help="DEM: discrete configuration")
-    p.add_argument("--mu-joint", dest="mu_joint", type=float, default=None,
-                   help=f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})")
-    p.add_argument("--mu-base", dest="mu_base", type=float, default=None,
-                   help=f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})")
-    add_contact_law_arguments(p)
     p.set_defaults(func=_run_domain)
 
 
@@ -260,16 +227,7 @@ def dem_domain(args: argparse.Namespace) -> int:
                                   title=f"{label}: DEM vs rocking linkages, one-cycle sine")
         res["plot"] = str(args.plot)
     if args.json:
-        print_json({k: v for k, v in res.items() if k != "thresholds"} | {"thresholds": [
-            {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")}
-            for t in res["thresholds"]]})
-        return 0
-    print(f"{label}  DEM ({res['physics_engine']}, dt {res['dt']:g} s, {res['config']}, mu {res['mu_joint']:g}/"
-          f"{res['mu_base']:g})  static lambda {res['lambda']:.4f}")
-    for t in res["thresholds"]:
-        a = "none up to %.3f g" % res["a_range_g"][1] if t["amplitude_g"] is None else f"{t['amplitude_g']:.4f} g"
-        above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in t["survival_bands_above"])
-        print(f"  {t['freq']:6.3g} Hz: collapse from {a}" + (f"; survives again {above}" if above else ""))
-    if args.plot:
-        print(f"figure: {args.plot}")
+        print_json(dem_domain_json(res))
+    else:
+        print("\n".join(dem_domain_lines(label, res)))
     return 0

@@ -6,17 +6,9 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from dem.common.figures import save_figure
 from dem.experiments.shake.run import motion_trace
 from specimens.constants import G
-from foundation.io import atomic_path
-
-
-def _save(fig, path: str | Path, overwrite: bool = False) -> Path:
-
-    path = Path(path)
-    with atomic_path(path, overwrite=overwrite) as tmp:
-        fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=120, bbox_inches="tight")
-    return path
 
 
 def plot_shake_history(t_in: np.ndarray, a_in: np.ndarray, t: np.ndarray, crown_u: np.ndarray, dmax: np.ndarray,
@@ -55,7 +47,7 @@ def save_shake_figure(result, path: str | Path) -> Path:
                              result.settings.collapse_fraction, result.t_collapse, result.t_rebound,
                              title=f"{result.label}: {'collapse' if result.collapsed else 'survival'}"
                                    f" ({result.mode}), PGA {result.motion.pga / G:.3f} g")
-    return _save(fig, path)
+    return save_figure(fig, path)
 
 
 def plot_domain_over_analytic(dem: dict, analytic: dict, path: str | Path, title: str = "") -> Path:
@@ -89,4 +81,4 @@ def plot_domain_over_analytic(dem: dict, analytic: dict, path: str | Path, title
     ax.legend(fontsize=8)
     ax.set_title(title or "failure domain, one-cycle sine")
     fig.tight_layout()
-    return _save(fig, path)
+    return save_figure(fig, path)

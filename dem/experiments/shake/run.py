@@ -36,11 +36,17 @@ Crown displacement: ``peak_crown_mm`` = max ``|u|`` [mm] over the record; ``resi
 = ``u`` at the end of the record (for a collapsed run: at the confirmation, since the run stops
 there by default). ``collapse_phase`` compares the rebound with ``t_collapse``, the instant the
 excursion that did not come back passed the criterion.
+
+A run is :func:`run` of a :class:`ShakeSpec` (what is shaken, by what motion, with which settings and
+protocol); its :class:`ShakeResult` declares its summary's columns once (:class:`dem.experiments.contract.Result`):
+the JSON of ``archdem shake`` and the summary in the result file are its row. :func:`shake` is the same
+call with the spec's fields as arguments.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -52,6 +58,7 @@ from dem.core.model import Model, as_model
 from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings, dynamics_settings
 from dem.core.simulate import SimResult, simulate
+from dem.experiments.contract import Column, Result, Schema
 from specimens.constants import G
 from foundation.errors import ArchdemInputError
 
@@ -116,9 +123,39 @@ class ShakeProtocol:
         return total
 
 
+@dataclass(frozen=True)
+class ShakeSpec:
+    """One shake run: ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model, see
+    :func:`dem.core.model.as_model`, an arch cut in ``config``) under ``motion`` (ground acceleration
+    [m/s^2], +x), with ``settings`` (the shakes' engine by default) and ``protocol``; ``label`` names it
+    (default the model's name); ``friction_work`` False skips the contact-force readout behind the friction
+    work (NaN then)."""
+
+    target: Any
+    motion: GroundMotion
+    settings: Settings = field(default_factory=dynamics_settings)
+    protocol: ShakeProtocol = field(default_factory=ShakeProtocol)
+    label: str | None = None
+    config: str = "glued"
+    friction_work: bool = True
+
+
 @dataclass
-class ShakeResult:
-    """Outcome of one shake run (SI inside; the summary reports mm and g)."""
+class ShakeResult(Result):
+    """Outcome of one shake run (SI inside; the summary reports mm and g): its summary row declared once."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("collapsed", "bool"), Column("t_collapse", "float", "s"), Column("mode", "str"),
+        Column("collapse_phase", "str"), Column("t_motion_start", "float", "s"), Column("t_first_rebound", "float", "s"),
+        Column("peak_crown_mm", "float", "mm"), Column("residual_crown_mm", "float", "mm"),
+        Column("max_displacement_mm", "float", "mm"), Column("residual_displacement_mm", "float", "mm"),
+        Column("t_exceed", "float", "s"), Column("recovered", "bool"), Column("t_collapse_confirmed", "float", "s"),
+        Column("joints", "json"), Column("input", "json"), Column("pga_g", "float", "g"), Column("duration", "float", "s"),
+        Column("config", "str"), Column("contact", "float"), Column("mu_joint", "float"), Column("mu_base", "float"),
+        Column("load", "str"), Column("friction_work_J", "float", "J"), Column("out_of_plane", "json"),
+        Column("t_end_at_rest", "float", "s"), Column("wall_s", "float", "s"), Column("steps", "int"),
+        Column("result_file", "str"),
+    ))
 
     label: str
     model: Model
@@ -164,10 +201,8 @@ class ShakeResult:
     def residual_crown_mm(self) -> float:
         return float(self.crown_u[-1] * 1e3) if len(self.crown_u) else 0.0
 
-    def summary(self) -> dict:
-        """The JSON answer of ``archdem shake``."""
-        m = self.motion.describe()
-        return {
+    def rows(self) -> list[dict]:
+        return [{
             "id": self.label, "collapsed": self.collapsed, "t_collapse": self.t_collapse, "mode": self.mode,
             "collapse_phase": self.collapse_phase, "t_motion_start": self.t_start, "t_first_rebound": self.t_rebound,
             "peak_crown_mm": self.peak_crown_mm, "residual_crown_mm": self.residual_crown_mm,
@@ -176,14 +211,34 @@ class ShakeResult:
             "t_exceed": self.t_exceed, "recovered": self.recovered,
             "t_collapse_confirmed": float(self.sim.t_confirm) if self.collapsed else None,
             "joints": [j.to_dict() for j in self.sim.joints],
-            "input": m, "pga_g": float(self.motion.pga / G), "duration": self.sim.duration,
+            "input": self.motion.describe(), "pga_g": float(self.motion.pga / G), "duration": self.sim.duration,
             "config": self.model.source.get("config", ""), "contact": self.model.source.get("contact", 1.0),
             "mu_joint": self.settings.mu_joint,
             "mu_base": self.settings.mu_base, "load": self.protocol.load,
             "friction_work_J": self.sim.history.friction_work, "out_of_plane": self.sim.out_of_plane,
             "t_end_at_rest": None if math.isnan(self.sim.t_rest) else float(self.sim.t_rest),
             "wall_s": self.sim.wall_s, "steps": self.sim.steps, "result_file": self.result_file,
-        }
+        }]
+
+    def summary(self) -> dict:
+        """The JSON answer of ``archdem shake`` (its row)."""
+        return self.to_json()[0]
+
+    def text(self) -> str:
+        """The line ``archdem shake`` prints: the outcome, the crown's peak and residual, the file."""
+        s = self.summary()
+        act = ", ".join(f"{j['joint']}:{j['state']}" for j in s["joints"] if j["state"] != "closed")
+        if self.collapsed:
+            what = (f"COLLAPSE at t = {self.t_collapse:.3f} s ({self.collapse_phase}; confirmed at "
+                    f"{s['t_collapse_confirmed']:.3f} s), {self.mode} [{act}]")
+        elif self.recovered:
+            what = (f"survival after an excursion to {s['max_displacement_mm']:.1f} mm (criterion at t = "
+                    f"{self.t_exceed:.3f} s, {s['residual_displacement_mm']:.1f} mm at the end), {self.mode}")
+        else:
+            what = f"survival, {self.mode}"
+        return (f"{self.label} ({s['config']}, mu {self.settings.mu_joint:g}/{self.settings.mu_base:g}), PGA "
+                f"{s['pga_g']:.3f} g: {what}; crown peak {self.peak_crown_mm:.2f} mm, residual "
+                f"{self.residual_crown_mm:.2f} mm; {self.sim.wall_s:.1f} s -> {self.result_file}")
 
 
 def shake_settings(settings: Settings, protocol: ShakeProtocol) -> Settings:
@@ -225,17 +280,20 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
           label: str | None = None, friction_work: bool = True, config: str = "glued",
           progress: Progress | None = None) -> ShakeResult:
     """Run ``motion`` (ground acceleration [m/s^2], +x; :func:`analytic.motions.records.ground_motion` builds
-    one in g) on ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model, see
-    :func:`dem.core.model.as_model`); see the module docstring. ``friction_work=False`` skips the
-    contact-force readout behind the friction work (NaN then). ``progress(done, total, note)``: called as
-    the run advances (:mod:`dem.core.progress`; ``done`` and ``total`` simulated seconds, rounded to 0.01 s)."""
-    model = as_model(target, config=config)
+    one in g) on ``target``: :func:`run` of the :class:`ShakeSpec` of these arguments."""
+    return run(ShakeSpec(target, motion, settings or dynamics_settings(), protocol or ShakeProtocol(), label, config,
+                         friction_work), progress)
+
+
+def run(spec: ShakeSpec, progress: Progress | None = None) -> ShakeResult:
+    """Run ``spec``; see the module docstring. ``progress(done, total, note)``: called as the run advances
+    (:mod:`dem.core.progress`; ``done`` and ``total`` simulated seconds, rounded to 0.01 s)."""
+    model = as_model(spec.target, config=spec.config)
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.core.provenance import run_provenance
 
-    settings = settings or dynamics_settings()
-    proto = protocol or ShakeProtocol()
-    st = shake_settings(settings, proto)
+    motion, proto, friction_work = spec.motion, spec.protocol, spec.friction_work
+    st = shake_settings(spec.settings, proto)
     duration = proto.total_duration(motion)
     load = GroundShake(motion, g=st.g, driven_base=proto.load == "driven-base")
     rest = None
@@ -245,7 +303,7 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
     if progress is not None:
         total = round(duration, 2)
         progress(0.0, total, "input")
-        engine = TimedEngine(get_engine(st.engine), st.dt,
+        engine = TimedEngine(get_engine(st.engine, st.engine_options), st.dt,
                              lambda t: progress(round(t, 2), total, "input" if t < motion.duration else "tail"))
     sim = simulate(model, st, load, duration, record_every=st.record_every, stop_on_collapse=proto.stop_on_collapse,
                    friction_work=friction_work, rest=rest, rest_span=True, engine=engine)
@@ -260,8 +318,8 @@ def shake(target, motion: GroundMotion, settings: Settings | None = None, protoc
     crit = detect.criterion(st, model)
     crit.update({"first_rebound": "first sign change of the crown horizontal velocity after |u| > onset_mm",
                  "onset_mm": proto.onset_mm})
-    return ShakeResult(label or model.name, model, st, proto, motion, sim, u, t_start, t_reb, phase, crit,
-                       run_provenance(st.engine))
+    return ShakeResult(spec.label or model.name, model, st, proto, motion, sim, u, t_start, t_reb, phase, crit,
+                       run_provenance(st.engine, st.engine_options))
 
 
 def collapses(model: Model, motion: GroundMotion, settings: Settings, protocol: ShakeProtocol) -> tuple[bool, str, str | None]:
@@ -278,5 +336,5 @@ def motion_trace(motion: GroundMotion, duration: float, dt: float) -> tuple[np.n
     return t, np.asarray(motion.acceleration(t), float)
 
 
-__all__ = ["FORMAT", "ShakeProtocol", "ShakeResult", "shake", "collapses", "crown_displacement", "first_rebound",
+__all__ = ["FORMAT", "ShakeProtocol", "ShakeSpec", "ShakeResult", "run", "shake", "collapses", "crown_displacement", "first_rebound",
            "shake_settings"]

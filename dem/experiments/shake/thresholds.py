@@ -16,12 +16,17 @@ bisection may return either edge of a survival window. :func:`threshold` therefo
    of the scan bracket (resolution ``scan_ratio``) except the bisected first threshold.
 
 How far a threshold is a number of the arch and not of the engine's numerics: the default engine
-(MuJoCo) holds its thresholds under halving the time step and meets LMGC90's; PyBullet's move with
-its step from 4 Hz on (docs/validation.md#19-three-engine-shake-study).
+(MuJoCo) holds its thresholds under halving the time step and meets LMGC90's, but where the joints
+can slide at 6-8 Hz (docs/validation.md#19-three-engine-shake-study). :func:`check_threshold` says it
+of each threshold: settled, or a range holding every reading (``threshold(..., check=True)``).
 
 A one-cycle sine here is the plain shake-table pulse ``a sin(2 pi f t)``, ``t in [0, 1/f]``
 (:class:`analytic.motions.inputs.SinePulse` with zero phase; the analytic ``sine0`` input). Amplitudes
 in m/s^2 inside; results are reported in g.
+
+A search is :func:`run` of a :class:`ThresholdSpec`; its :class:`ThresholdResult` declares its summary's
+columns once (:class:`dem.experiments.contract.Result`). :func:`threshold` is the same call with the spec's
+fields as arguments.
 """
 from __future__ import annotations
 
@@ -29,8 +34,8 @@ import math
 import os
 import time
 from concurrent.futures import FIRST_COMPLETED, wait
-from dataclasses import dataclass, field
-from typing import Callable, Sequence
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, ClassVar, Sequence
 
 import numpy as np
 
@@ -39,8 +44,9 @@ from analytic.search import Bracket, search
 from dem.core.model import Model, as_model
 from dem.core.progress import Progress
 from dem.core.settings import Settings, dynamics_settings
-from dem.experiments.shake.run import ShakeProtocol, collapses
-from specimens.constants import G
+from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.shake.run import ShakeProtocol, collapses, shake
+from specimens.constants import NO_SLIDING_MU, G
 from foundation.errors import ArchdemInputError
 
 SCAN_TOP = 5.0  # default top of the amplitude scan, as a multiple of its start
@@ -65,13 +71,20 @@ class Outcome:
 
 
 @dataclass(frozen=True)
-class ThresholdResult:
-    """Least collapsing amplitude at one frequency, with all scan bands.
+class ThresholdResult(Result):
+    """Least collapsing amplitude at one frequency, with all scan bands: its summary row declared once.
 
     ``amplitude_g`` is None when nothing up to ``a_max`` collapsed; ``bracket_g`` the final
     (survival, collapse) bisection bracket; ``bands``: dicts ``from_g``, ``to_g``, ``outcome``
     (``survival``/``collapse``), ``collapse``; ``runs``: every simulation in order.
     """
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("freq", "float", "Hz"), Column("amplitude_g", "float", "g"), Column("bracket_g", "json", "g"),
+        Column("mode", "str"), Column("collapse_phase", "str"), Column("bands", "json", "g"),
+        Column("survival_bands_above", "json", "g"), Column("n_sims", "int"), Column("scan_ratio", "float"),
+        Column("tol", "float"), Column("wall_s", "float", "s"), Column("runs", "json"), Column("verdict", "json"),
+    ))
 
     freq: float
     amplitude_g: float | None
@@ -85,6 +98,7 @@ class ThresholdResult:
     phase: str | None = None
     extra: dict = field(default_factory=dict)
     a_range_g: tuple[float, float] | None = None  # the scanned amplitudes [g]
+    verdict: "Verdict | None" = None  # settled or a range (check_threshold); None: not checked
 
     @property
     def n_sims(self) -> int:
@@ -97,13 +111,234 @@ class ThresholdResult:
             return []
         return [b for b in self.bands if not b["collapse"] and b["from_g"] >= self.amplitude_g * (1 - 1e-9)]
 
+    def rows(self) -> list[dict]:
+        return [{"freq": self.freq, "amplitude_g": self.amplitude_g,
+                 "bracket_g": list(self.bracket_g) if self.bracket_g else None, "mode": self.mode,
+                 "collapse_phase": self.phase, "bands": list(self.bands),
+                 "survival_bands_above": self.survival_bands_above, "n_sims": self.n_sims,
+                 "scan_ratio": self.scan_ratio, "tol": self.tol, "wall_s": self.wall_s,
+                 "runs": [r.to_dict() for r in self.runs], "verdict": (self.verdict or NOT_CHECKED).to_dict()}]
+
     def summary(self) -> dict:
-        return {"freq": self.freq, "amplitude_g": self.amplitude_g,
-                "bracket_g": list(self.bracket_g) if self.bracket_g else None, "mode": self.mode,
-                "collapse_phase": self.phase, "bands": list(self.bands),
-                "survival_bands_above": self.survival_bands_above, "n_sims": self.n_sims,
-                "scan_ratio": self.scan_ratio, "tol": self.tol, "wall_s": self.wall_s,
-                "runs": [r.to_dict() for r in self.runs], **self.extra}
+        """Its row as JSON, and ``extra``."""
+        return {**self.to_json()[0], **self.extra}
+
+    def text(self, label: str, lam: float) -> str:
+        """What ``archdem threshold`` prints of the search on ``label`` of static multiplier ``lam``: the threshold,
+        its bracket, the survival bands above it, the cost, and the verdict with its readings if checked."""
+        checked = "" if self.verdict is None else "\n" + "\n".join(self.verdict.lines())
+        if self.amplitude_g is None:
+            return (f"{label} {self.freq:g} Hz: no collapse up to {self.a_range_g[1]:.3f} g ({self.n_sims} runs, "
+                    f"{self.wall_s:.1f} s)" + checked)
+        above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in self.survival_bands_above)
+        return (f"{label} {self.freq:g} Hz: least collapsing amplitude {self.amplitude_g:.4f} g (bracket "
+                f"{self.bracket_g[0]:.4f}-{self.bracket_g[1]:.4f}, {self.mode}, {self.phase}); static lambda {lam:.4f}"
+                + (f"; survives again {above}" if above else "") + f"; {self.n_sims} runs, {self.wall_s:.1f} s" + checked)
+
+
+#: Where the engines are known to split (docs/decisions/011-dynamics-engine.md#settled-or-a-range): a pulse
+#: strictly between these frequencies [Hz] with some friction below NO_SLIDING_MU gets the LMGC90 check; the
+#: study found every split at 6 and 8 Hz with the joints free to slide, none at 4 or 10 Hz.
+SPLIT_BAND_HZ = (4.0, 10.0)
+REFERENCE_ENGINE = "lmgc90"
+#: A check reads the bracket alike when it stands at its survival end / CHECK_MARGIN and collapses at its
+#: collapse end x CHECK_MARGIN: thresholds within 5 %, the engines' scatter where they agree (up to 4.3 %).
+CHECK_MARGIN = 1.05
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One run of a threshold's check: ``engine`` at protocol step ``dt`` [s], amplitude [g], outcome,
+    mode and the joints that slid (state ``slide`` or ``hinge+slide`` over the mode window);
+    ``check``: ``search`` (the search's own run), ``half step`` or the reference engine's name."""
+
+    check: str
+    engine: str
+    dt: float
+    amplitude_g: float
+    collapsed: bool
+    mode: str
+    joints: tuple[str, ...] = ()
+
+    def to_dict(self) -> dict:
+        return {"check": self.check, "engine": self.engine, "dt": self.dt, "amplitude_g": self.amplitude_g,
+                "collapsed": self.collapsed, "mode": self.mode, "joints": list(self.joints)}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Whether a threshold is the arch's or a reading of an engine at a step (:func:`check_threshold`).
+
+    ``status``: ``settled`` (every check reads the search's bracket), ``range`` (some check does not:
+    the least collapsing amplitude lies in ``[low_g, high_g]`` [g] by the readings; ``low_g`` None: some
+    check collapses down to the bottom of the scan, ``high_g`` None: some check stands up to its top),
+    or ``unchecked`` (``why``). ``checks``: those run; ``readings``: every run, the search's two first;
+    ``wall_s``: the checks' cost [s]."""
+
+    status: str
+    why: str = ""
+    low_g: float | None = None
+    high_g: float | None = None
+    checks: tuple[str, ...] = ()
+    readings: tuple[Reading, ...] = ()
+    wall_s: float = 0.0
+
+    def text(self) -> str:
+        """One line: ``settled (half step, lmgc90; within 5%)``, ``range 0.840-none up to 1.245 g (why)``,
+        ``unchecked (why)``."""
+        if self.status == "settled":
+            return f"settled ({', '.join(self.checks)}; within {CHECK_MARGIN - 1:.0%})"
+        if self.status == "unchecked":
+            return f"unchecked ({self.why})"
+        top = max(r.amplitude_g for r in self.readings)
+        lo = "below the scan" if self.low_g is None else f"{self.low_g:.3f}"
+        hi = f"none up to {top:.3f}" if self.high_g is None else f"{self.high_g:.3f}"
+        return f"range {lo}-{hi} g ({self.why})"
+
+    def lines(self) -> list[str]:
+        """The verdict, the checks' count and cost, then its readings one a line."""
+        n = sum(r.check != "search" for r in self.readings)
+        return [f"  {self.text()}; {n} check runs, {self.wall_s:.1f} s"] + [
+            f"    {r.check:<9} {r.engine:<8} dt {r.dt * 1e3:g} ms  {r.amplitude_g:.4f} g "
+            f"{'collapsed' if r.collapsed else 'stands':<9} {r.mode}" + (f" (slid: {' '.join(r.joints)})" if r.joints else "")
+            for r in self.readings]
+
+    def to_dict(self) -> dict:
+        return {"status": self.status, "text": self.text(), "why": self.why, "range_g": [self.low_g, self.high_g],
+                "checks": list(self.checks), "readings": [r.to_dict() for r in self.readings], "wall_s": self.wall_s}
+
+
+NOT_CHECKED = Verdict("unchecked", "not checked")
+
+
+def reference_needed(freq: float, settings: Settings) -> bool:
+    """Whether a threshold at ``freq`` [Hz] gets the reference engine's check: inside :data:`SPLIT_BAND_HZ`
+    with some joint free to slide (a friction below ``NO_SLIDING_MU``), whatever its collapse mode reads
+    (the study's splits read rocking as often as sliding)."""
+    lo, hi = SPLIT_BAND_HZ
+    return lo < freq < hi and min(settings.mu_joint, settings.mu_base) < NO_SLIDING_MU
+
+
+def reference_settings(settings: Settings) -> Settings:
+    """The reference engine's settings for a check: ``settings`` on LMGC90 at its own default step."""
+    return settings.with_(engine=REFERENCE_ENGINE, dt=Settings().dt)
+
+
+def reference_unavailable(model: Model, settings: Settings) -> str:
+    """Why the reference engine cannot check ``model`` with ``settings`` ("" when it can)."""
+    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+    from dem.core.engines import engine_installed
+    from dem.core.engines.lmgc90_engine import DEFAULT_OPTIONS, build_message
+
+    if not engine_installed(REFERENCE_ENGINE):
+        return "LMGC90 is not installed"
+    if model.ties:
+        return "LMGC90 runs no tie-rods"
+    try:
+        build_message(model, reference_settings(settings), DEFAULT_OPTIONS)
+    except ArchdemInputError as e:
+        return str(e).split(";")[0].replace("the lmgc90 engine", "LMGC90")
+    return ""
+
+
+def _read_one(args) -> Reading:
+    """One check run: ``(check, model, settings, protocol, motion_fn, a_g, freq)``."""
+    check, model, settings, protocol, motion_fn, a_g, freq = args
+    r = shake(model, motion_fn(a_g * G, freq), settings, protocol, friction_work=False)
+    slid = tuple(j.joint for j in r.sim.joints if "slide" in j.state)
+    return Reading(check, settings.engine, settings.dt, float(a_g), bool(r.collapsed), r.mode, slid)
+
+
+def _walk(read: Callable[[float], Reading], start: Reading, amps: Sequence[float]) -> tuple[list[Reading], float | None]:
+    """Read ``amps`` in order, after ``start``, until the outcome differs from ``start``'s: the new runs and
+    the amplitude where that check's least collapse lies — the last collapsing amplitude walking down, the
+    first walking up — or None when the walk ends without a change."""
+    runs: list[Reading] = []
+    prev = start
+    for a in amps:
+        runs.append(read(a))
+        if runs[-1].collapsed != start.collapsed:
+            return runs, (prev if not runs[-1].collapsed else runs[-1]).amplitude_g
+        prev = runs[-1]
+    return runs, None
+
+
+def check_threshold(res: ThresholdResult, model: Model, settings: Settings, protocol: ShakeProtocol | None = None,
+                    motion_fn: Callable[[float, float], GroundMotion] = sine_motion, workers: int = 1,
+                    reference: bool | None = None) -> Verdict:
+    """Settled or a range: rerun the two ends of ``res``'s bracket (last survival / :data:`CHECK_MARGIN`,
+    first collapse x :data:`CHECK_MARGIN`; the top of the scan when nothing collapsed) at half the protocol
+    step and, where :func:`reference_needed` (or ``reference`` True), on LMGC90 at its default step. A check
+    that reads them otherwise walks the scan's amplitudes away from the bracket (up when it stands at the
+    upper end, down when it collapses at the lower) until its outcome changes, so the range holds its
+    threshold too. ``workers``: processes for the bracket's runs; ``reference``: False never asks LMGC90
+    (a threshold that needs it is then "unchecked"), True always, None by the rule.
+    docs/decisions/011-dynamics-engine.md#settled-or-a-range."""
+    wall0 = time.perf_counter()
+    protocol = protocol or ShakeProtocol()
+    if res.a_range_g is None:
+        return NOT_CHECKED
+    a_min, a_max = res.a_range_g
+    grid = [float(a) for a in scan_grid(a_min, a_max, res.scan_ratio)]
+    if res.bracket_g is None:
+        ends: list[tuple[float, bool]] = [(grid[-1], False)]  # nothing collapsed: the top stands
+        asked = [grid[-1]]
+    else:
+        ends = [(res.bracket_g[0], False), (res.bracket_g[1], True)]
+        asked = [res.bracket_g[0] / CHECK_MARGIN, res.bracket_g[1] * CHECK_MARGIN]
+    searched = {round(r.amplitude_g, 12): r for r in res.runs}
+    readings = [Reading("search", settings.engine, settings.dt, a, c, getattr(searched.get(round(a, 12)), "mode", ""))
+                for a, c in ends]
+    ends = [(a, c) for a, (_, c) in zip(asked, ends)]
+    checks = [("half step", settings.with_(dt=0.5 * settings.dt))]
+    why_not = ""
+    if settings.engine != REFERENCE_ENGINE and (reference is True or reference_needed(res.freq, settings)):
+        why_not = "LMGC90 not asked" if reference is False else reference_unavailable(model, settings)
+        if not why_not:
+            checks.append((REFERENCE_ENGINE, reference_settings(settings)))
+    # each reading's least collapsing amplitude [g] on the scan: inf none up to the top, -inf down to the bottom
+    found = [math.inf if res.amplitude_g is None else res.amplitude_g]
+    moved = []
+
+    def run(name: str, st: Settings) -> tuple[list[Reading], float | None, str]:
+        """The check's runs, where its threshold lies (None: it reads the bracket alike) and what it read."""
+        got = _map(_read_one, [(name, model, st, protocol, motion_fn, a, res.freq) for a, _ in ends], workers)
+        if all(r.collapsed == c for r, (_, c) in zip(got, ends)):
+            return got, None, ""
+        read = lambda a: _read_one((name, model, st, protocol, motion_fn, a, res.freq))  # noqa: E731
+        if got[0].collapsed:  # collapses below the last survival (or at the top): walk down the scan
+            a0 = ends[0][0]
+            walked, at = _walk(read, got[0], [a for a in reversed(grid) if a < a0 * (1 - 1e-9)])
+            return got + walked, -math.inf if at is None else at, (
+                f"{name} collapses at {a0:.3f} g" + (" and down to the bottom of the scan" if at is None else ""))
+        a0 = ends[-1][0]  # stands above the first collapse: walk up the scan
+        walked, at = _walk(read, got[-1], [a for a in grid if a > a0 * (1 + 1e-9)])
+        return got + walked, math.inf if at is None else at, (
+            f"{name} stands at {a0:.3f} g" + (" and up to the top of the scan" if at is None else ""))
+
+    for name, st in list(checks):
+        try:
+            runs, at, what = run(name, st)
+        except RuntimeError as e:  # the reference's worker died: the search stands, unchecked by it
+            if name != REFERENCE_ENGINE:
+                raise
+            why_not = f"LMGC90 failed: {str(e).splitlines()[0]}"
+            checks.remove((name, st))
+            continue
+        readings += runs
+        if at is not None:
+            found.append(at)
+            moved.append(what)
+    names = tuple(n for n, _ in checks)
+    wall = time.perf_counter() - wall0
+    if moved:
+        low, high = min(found), max(found)
+        why = "; ".join(moved) + (f"; {why_not}" if why_not else "")
+        return Verdict("range", why, None if low == -math.inf else low, None if high == math.inf else high, names,
+                       tuple(readings), wall)
+    if why_not:
+        return Verdict("unchecked", why_not, checks=names, readings=tuple(readings), wall_s=wall)
+    return Verdict("settled", "", checks=names, readings=tuple(readings), wall_s=wall)
 
 
 def _run_one(args) -> Outcome:
@@ -299,27 +534,71 @@ def static_onset(model: Model, settings: Settings) -> float:
     return float(solve_lp(model.assembly, settings.mu_joint, settings.mu_base).lam)
 
 
+@dataclass(frozen=True)
+class ThresholdSpec:
+    """A threshold search: the least collapsing amplitude [g] of ``motion_fn(a, freq)`` (a [m/s^2], ``freq``
+    [Hz]; a plain one-cycle sine by default) on ``target`` (a specimen id, Specimen, PointedArch, Assembly or
+    Model, see :func:`dem.core.model.as_model`, an arch cut in ``config``) with ``settings`` and ``protocol``.
+    The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`; nothing moves below it)
+    to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``) by ``scan_ratio``, the bisection to ``tol``, at most
+    ``max_sims`` runs. ``check``: give the result its settled-or-range verdict (:func:`check_threshold`;
+    otherwise it reads "unchecked"); ``"half-step"``: the half-step check only (where LMGC90 would be asked
+    the verdict reads "unchecked", never settled)."""
+
+    target: Any
+    freq: float
+    settings: Settings = field(default_factory=dynamics_settings)
+    protocol: ShakeProtocol = field(default_factory=ShakeProtocol)
+    a_min_g: float | None = None
+    a_max_g: float | None = None
+    scan_ratio: float = 1.15
+    tol: float = 0.01
+    max_sims: int = 60
+    config: str = "glued"
+    check: bool | str = False
+    motion_fn: Callable[[float, float], GroundMotion] = sine_motion
+
+
 def threshold(target, freq: float, settings: Settings | None = None, protocol: ShakeProtocol | None = None,
               a_min_g: float | None = None, a_max_g: float | None = None, scan_ratio: float = 1.15, tol: float = 0.01,
               workers: int | None = None, motion_fn: Callable[[float, float], GroundMotion] = sine_motion,
               max_sims: int = 60, config: str = "glued", scheduler: str | None = None,
-              progress: Progress | None = None) -> ThresholdResult:
-    """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target`` (a specimen id,
-    Specimen, PointedArch, Assembly or Model, see :func:`dem.core.model.as_model`); see the module
-    docstring. The scan runs from ``a_min_g`` (default: the static onset, :func:`static_onset`;
-    nothing moves below it) to ``a_max_g`` (default ``SCAN_TOP`` x ``a_min_g``); ``workers``: processes for the
-    scan (default all cores, 1 = serial); ``scheduler``: a Dask scheduler address to run on instead.
-    ``progress(done, total, note)``: called as each run ends (:mod:`dem.core.progress`; ``done`` runs of
-    ``total`` expected, ``note`` the amplitude, its outcome and the bracket).
-    """
-    model = as_model(target, config=config)
+              progress: Progress | None = None, check: bool | str = False) -> ThresholdResult:
+    """Least collapsing amplitude [g] of ``motion_fn(a, freq)`` on ``target``: :func:`run` of the
+    :class:`ThresholdSpec` of these arguments."""
+    spec = ThresholdSpec(target, freq, settings or dynamics_settings(), protocol or ShakeProtocol(), a_min_g, a_max_g,
+                         scan_ratio, tol, max_sims, config, check, motion_fn)
+    return run(spec, workers, scheduler, progress)
+
+
+def run(spec: ThresholdSpec, workers: int | None = None, scheduler: str | None = None,
+        progress: Progress | None = None) -> ThresholdResult:
+    """The search of ``spec``; see the module docstring. ``workers``: processes for the scan (default all
+    cores, 1 = serial); ``scheduler``: a Dask scheduler address to run on instead. ``progress(done, total,
+    note)``: called as each run ends (:mod:`dem.core.progress`; ``done`` runs of ``total`` expected, ``note``
+    the amplitude, its outcome and the bracket)."""
+    model = as_model(spec.target, config=spec.config)
+    settings, protocol, motion_fn = spec.settings, spec.protocol, spec.motion_fn
+    workers = (os.cpu_count() or 1) if workers is None else int(workers)
+    res = _search(model, spec.freq, settings, protocol, spec.a_min_g, spec.a_max_g, spec.scan_ratio, spec.tol, workers,
+                  motion_fn, spec.max_sims, scheduler, progress)
+    if not spec.check:
+        return res
+    if progress is not None:
+        progress(res.n_sims, res.n_sims, "checking the bracket")
+    reference = False if spec.check == "half-step" else None
+    return replace(res, verdict=check_threshold(res, model, settings, protocol, motion_fn, workers, reference))
+
+
+def _search(model: Model, freq: float, settings: Settings, protocol: ShakeProtocol, a_min_g: float | None,
+            a_max_g: float | None, scan_ratio: float, tol: float, workers: int,
+            motion_fn: Callable[[float, float], GroundMotion], max_sims: int, scheduler: str | None,
+            progress: Progress | None) -> ThresholdResult:
+    """The search of :func:`threshold` (its arguments, resolved)."""
     if not (math.isfinite(freq) and freq > 0):
         raise ArchdemInputError(f"frequency must be a positive number of Hz, got {freq!r}")
     if not (0 < tol < 0.5):
         raise ArchdemInputError(f"bisection tolerance must be in (0, 0.5), got {tol!r}")
-    settings = settings or dynamics_settings()
-    protocol = protocol or ShakeProtocol()
-    workers = (os.cpu_count() or 1) if workers is None else int(workers)
     wall0 = time.perf_counter()
     a_min_g = static_onset(model, settings) if a_min_g is None else a_min_g
     a_max_g = SCAN_TOP * a_min_g if a_max_g is None else a_max_g

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from dem.common.arch import arch_from_params, arch_params
 from dem.core import detect
 from dem.core.model import from_assembly
 from dem.core.settings import Settings
@@ -34,15 +35,6 @@ MAP_PROTOCOL = {"kind": "hold", "tol": MAP_TILT_TOL, "start": "lp", "guess_brack
 # case (see make_case)
 CASE_PROTOCOL_FIELDS = ("ramp_time", "hold_time", "rest_after", "rest_window", "rest_growth", "guess_bracket",
                         "probe_ends")
-
-
-def arch_params(arch: PointedArch) -> dict:
-    """The exact constructor parameters of ``arch`` (JSON-serialisable) [m]."""
-    return {"e": float(arch.e), "t": float(arch.t), "Rp": float(arch.Rp), "width": float(arch.width)}
-
-
-def arch_from_params(p: dict) -> PointedArch:
-    return PointedArch(e=p["e"], t=p["t"], Rp=p["Rp"], width=p["width"])
 
 
 def _jsonable(v):
@@ -158,7 +150,7 @@ def replay_tilt(case: dict, results: dict):
     levels = [(float(a), bool(b)) for a, b in np.asarray(results["levels"]).reshape(-1, 2)]
     return TiltResult(case["label"], model, settings, proto, float(results["lambda"]), (lo, hi),
                       int(results["n_sims"]), float(results["wall_s"]), sim.mode, sim.joints, levels, sim, None,
-                      detect.criterion(settings, model), run_provenance(settings.engine))
+                      detect.criterion(settings, model), run_provenance(settings.engine, settings.engine_options))
 
 
 def synthetic_case(case: dict) -> dict:

@@ -41,6 +41,8 @@ class EnsembleResult:
     result_file: str = ""
     wall_s: float = math.nan
     extra: dict = field(default_factory=dict)
+    config: str = ""  # the blocks' configuration (glued or free)
+    seed: int | None = None  # the seed of the realisations
 
     @property
     def lambda_mean(self) -> float:
@@ -57,6 +59,15 @@ class EnsembleResult:
                 "lambdas": [float(x) for x in self.lambdas], "modes": dict(Counter(self.modes)),
                 "seeds": [list(s) for s in self.seeds], "failed": list(self.failed),
                 "wall_s": self.wall_s, "result_file": self.result_file, **self.extra}
+
+    def lines(self) -> list[str]:
+        """The ensemble as ``archdem tilt --ensemble`` prints it: the mean and spread of lambda, the modes, then
+        each failed realisation."""
+        modes = ", ".join(f"{m} {k}" for m, k in Counter(self.modes).items())
+        return [f"{self.label} ({self.config}, contact {self.contact:.3f}, edge-loss scatter {self.edge_loss_sd * 1e3:g} mm, "
+                f"seed {self.seed}): lambda {self.lambda_mean:.4f} +- {self.lambda_sd:.4f} over {len(self.lambdas)} "
+                f"realisations ({modes}); {self.wall_s:.0f} s -> {self.result_file}",
+                *(f"  failed: {f}" for f in self.failed)]
 
 
 def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: str | os.PathLike,
@@ -130,7 +141,7 @@ def tilt_ensembles(studies: list[EnsembleStudy], workers: int | None = None, sch
             else:
                 failed.append(f"realisation {c['realisation']}: {rec.error if rec is not None else 'not run'}")
         out.append(EnsembleResult(st.label, st.contact, st.edge_loss_sd, np.array(lams), tuple(modes), tuple(seeds),
-                                  tuple(failed), st.out_path, wall))
+                                  tuple(failed), st.out_path, wall, config=st.attrs["config"], seed=st.seed))
     return out
 
 

@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
-from foundation.io import atomic_path
+from dem.common.figures import save_figure
 
 STATE_COLOURS = {"closed": "0.6", "hinge": "tab:red", "slide": "tab:blue", "hinge+slide": "tab:purple", "open": "tab:orange"}
 
@@ -121,12 +121,9 @@ def plot_bracket(result, ax=None):
 def save_tilt_figure(result, path: str | Path) -> Path:
     """Both panels in one file (png/pdf/svg), written atomically."""
 
-    path = Path(path)
     fig = Figure(figsize=(12, 4.8))
     (a1, a2) = fig.subplots(1, 2, gridspec_kw={"width_ratios": [2, 1]})
     plot_collapse(result, a1)
     plot_bracket(result, a2)
     fig.tight_layout()
-    with atomic_path(path, overwrite=True) as tmp:
-        fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=120)
-    return path
+    return save_figure(fig, path, overwrite=True, tight=False)

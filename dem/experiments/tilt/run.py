@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field, replace
-from typing import Callable
+from typing import Any, Callable, ClassVar
 
 from analytic.search import search
 from dem.core import detect
@@ -37,6 +37,7 @@ from dem.core.model import Model, as_model
 from dem.core.progress import Progress, TimedEngine
 from dem.core.settings import Settings
 from dem.core.simulate import SimResult, onset_time, simulate
+from dem.experiments.contract import Column, Result, Schema
 from dem.experiments.tilt.check import LpCheck, lp_check, prevents_sliding
 from foundation.errors import ArchdemInputError
 from specimens.geometry import PointedArch
@@ -142,9 +143,34 @@ class TiltProtocol:
         return replace(self, **kw)
 
 
+@dataclass(frozen=True)
+class TiltSpec:
+    """What a tilt test runs: ``target`` (a specimen id, Specimen, PointedArch, Assembly or Model:
+    :func:`dem.core.model.as_model`, which cuts an arch in ``config``), the simulator's ``settings``, the
+    ``protocol``; ``label`` names it (default the model's name); ``assembly``: the blocks the model was built
+    from (default the model's own); ``check``: set the answer beside the LP of the same blocks."""
+
+    target: Any
+    settings: Settings = field(default_factory=Settings)
+    protocol: TiltProtocol = field(default_factory=TiltProtocol)
+    config: str = "glued"
+    label: str | None = None
+    assembly: Any = None
+    check: bool = True
+
+
 @dataclass
-class TiltResult:
-    """The answer of a tilt test."""
+class TiltResult(Result):
+    """The answer of a tilt test: its one row (the JSON answer of ``archdem tilt``) declared once in ``SCHEMA``."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("lambda", "float"), Column("theta_deg", "float", "deg"), Column("mode", "str"),
+        Column("joints", "json"), Column("bracket", "json"), Column("n_sims", "int"), Column("wall_s", "float", "s"),
+        Column("protocol", "str"), Column("time_scale", "float"), Column("config", "str"), Column("contact", "float"),
+        Column("mu_joint", "float"), Column("mu_base", "float"), Column("planar", "bool"),
+        Column("friction_work_J", "float", "J"), Column("out_of_plane", "json"), Column("result_file", "str"),
+        Column("lp_check", "json"),
+    ))
 
     label: str
     model: Model
@@ -172,9 +198,8 @@ class TiltResult:
     def out_of_plane(self) -> dict:
         return self.collapse.out_of_plane if self.collapse is not None else {}
 
-    def summary(self) -> dict:
-        """The JSON answer of ``archdem tilt``."""
-        return {
+    def rows(self) -> list[dict]:
+        return [{
             "id": self.label, "lambda": self.lam, "theta_deg": self.theta_deg, "mode": self.mode,
             "joints": [j.to_dict() if hasattr(j, "to_dict") else j for j in self.joints],
             "bracket": list(self.bracket), "n_sims": self.n_sims, "wall_s": self.wall_s,
@@ -184,7 +209,51 @@ class TiltResult:
             "friction_work_J": self.collapse.history.friction_work if self.collapse else float("nan"),
             "out_of_plane": self.out_of_plane, "result_file": self.result_file,
             "lp_check": self.lp_check.to_dict() if self.lp_check is not None else None,
-        }
+        }]
+
+    def summary(self) -> dict:
+        """The JSON answer of ``archdem tilt``: the table's one row."""
+        return self.to_json()[0]
+
+    def lines(self) -> list[str]:
+        """The answer as ``archdem tilt`` prints it: lambda, bracket, mode and hinges, the result file, the
+        protocol's time scale if slowed, the check against limit analysis."""
+        hinges = ", ".join(f"{j['joint']}:{j['state']}" for j in self.rows()[0]["joints"] if j["state"] != "closed")
+        st = self.settings
+        out = [f"{self.label} ({self.model.source.get('config', '')}, mu {st.mu_joint:g}/{st.mu_base:g}, "
+               f"{self.protocol.kind}): lambda = {self.lam:.4f} (theta = {self.theta_deg:.2f} deg), bracket "
+               f"[{self.bracket[0]:.4f}, {self.bracket[1]:.4f}], {self.mode} [{hinges}], {self.n_sims} simulations, "
+               f"{self.wall_s:.1f} s -> {self.result_file}"]
+        if (self.protocol.time_scale or 1.0) > 1.0:
+            out.append(f"  protocol {self.protocol.time_scale:.2f} x slower than at the catalogue's scale (a larger "
+                       "arch moves more slowly: docs/physics/dem.md#75-arches-larger-than-the-catalogue)")
+        out.append(lp_check_line(self.lp_check))
+        return out
+
+
+def lp_check_line(chk: LpCheck | None) -> str:
+    """The tilt's own check, as printed under its answer."""
+    if chk is None:
+        return "  limit analysis: none for this model (no blocks to solve)"
+    if chk.agrees is None:
+        return f"  limit analysis of the same blocks: no multiplier (lambda = {chk.lp_lam:g}); the tilt is unchecked"
+    return (f"  limit analysis of the same blocks{' (no sliding)' if chk.no_sliding else ''}: lambda = {chk.lp_lam:.4f}; "
+            f"the tilt is {100 * chk.rel_err:+.1f} % from it "
+            f"({'within' if chk.agrees else 'beyond'} {100 * chk.tolerance:g} %)")
+
+
+def calibration_lines(cal, n_tests: int, out) -> list[str]:
+    """A fitted imperfect-fit model (:class:`analytic.limit.calibration.Calibration`, fitted to ``n_tests``
+    specimens' laboratory tilts and stored in ``out``) as ``archdem calibrate`` prints it: the fit, a row per
+    specimen."""
+    rows = [f"{r['id']:<12} {r['t_mm']:5.0f} {r['lambda_lab']:6.3f} {r['lambda_lab_sd']:6.3f} {r['lambda_ideal_lp']:6.3f} "
+            f"{r['contact']:7.3f} {r['lambda_fit']:6.3f} {r['residual_pct']:+8.1f} {r['lambda_loo']:6.3f} "
+            f"{r['loo_error_pct']:+7.1f}  {r['observed_mode']}" for r in cal.rows]
+    return [f"edge loss {cal.edge_loss * 1e3:.2f} mm (scatter {cal.edge_loss_sd * 1e3:.2f} mm per edge), fitted to "
+            f"{n_tests} specimens; leave-one-out RMS error {cal.loo_rms_pct:.1f} % "
+            f"(one contact fraction for all, {cal.fraction:.3f}: {cal.fraction_loo_rms_pct:.1f} %)",
+            f"{'id':<12} {'t mm':>5} {'lab':>6} {'sd':>6} {'ideal':>6} {'contact':>7} {'fit':>6} {'resid %':>8} "
+            f"{'LOO':>6} {'LOO %':>7}  mode", *rows, f"-> {out} (used by --contact calibrated)"]
 
 
 def _static_lp(assembly, settings: Settings):
@@ -279,11 +348,19 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
     start, the estimate as ``guess``. ``on_level(lam, sim)``: called after every held level (hold).
     ``check``: set the answer beside the LP of the same blocks (``lp_check``, with its warning).
     ``progress(done, total, note)``: called as simulations start, advance and end (:mod:`dem.core.progress`;
-    ``done`` simulations, ``total`` the expected number, ``note`` the level and the bracket)."""
-    model = as_model(target, config=config)
-    assembly = model.assembly if assembly is None else assembly
-    settings = settings or Settings()
-    proto = protocol or TiltProtocol()
+    ``done`` simulations, ``total`` the expected number, ``note`` the level and the bracket).
+    The same as :func:`run` of a :class:`TiltSpec`."""
+    return run(TiltSpec(target, settings or Settings(), protocol or TiltProtocol(), config, label, assembly, check),
+               on_level=on_level, progress=progress)
+
+
+def run(spec: TiltSpec, on_level: Callable[[float, SimResult], None] | None = None,
+        progress: Progress | None = None) -> TiltResult:
+    """The tilt test of ``spec`` (the module docstring). ``on_level(lam, sim)`` and ``progress(done, total,
+    note)``: as :func:`tilt`'s, watchers of the run, not part of what it runs."""
+    model = as_model(spec.target, config=spec.config)
+    assembly = model.assembly if spec.assembly is None else spec.assembly
+    settings, proto, label, check = spec.settings, spec.protocol, spec.label, spec.check
     wall0 = time.perf_counter()
     if proto.time_scale is None:
         proto, settings = scaled(proto, settings, time_scale_of(assembly if assembly is not None else model))
@@ -306,7 +383,7 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
         if progress is None:
             return None
         progress(0, total, note)
-        return TimedEngine(get_engine(settings.engine), settings.dt,
+        return TimedEngine(get_engine(settings.engine, settings.engine_options), settings.dt,
                            lambda t: progress(0, total, f"{note} {t:.1f}/{duration:.1f} s"))
 
     if proto.kind == "hold":
@@ -329,13 +406,13 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
 
         track = _LevelProgress(progress, proto, lo, hi, up, down, n) if progress is not None else None
 
-        def run(lam: float) -> SimResult:
+        def run_level(lam: float) -> SimResult:
             if track is None:
                 r = hold_level(model, settings, proto, lam)
             else:
                 track.running(lam)
                 r = hold_level(model, settings, proto, lam, engine=TimedEngine(
-                    get_engine(settings.engine), settings.dt, lambda t: track.running(lam, t)))
+                    get_engine(settings.engine, settings.engine_options), settings.dt, lambda t: track.running(lam, t)))
             levels.append((lam, r.collapsed))
             if track is not None:
                 track.ran(lam, r.collapsed)
@@ -343,7 +420,7 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
                 on_level(lam, r)
             return r
 
-        res = search(run, lo, hi, proto.tol, rule="width/hi", is_upper=lambda r: r.collapsed,
+        res = search(run_level, lo, hi, proto.tol, rule="width/hi", is_upper=lambda r: r.collapsed,
                      up=lambda x: x * up, down=lambda x: x * down, ends=proto.probe_ends, limit=proto.lam_max,
                      max_runs=proto.max_sims - n)
         n += res.runs
@@ -351,7 +428,8 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
             raise ArchdemInputError(f"no collapse up to lambda = {res.hi:g} under held levels")
         if not res.bracketed:
             raise ArchdemInputError(f"no bracket of a held and a collapsing level within {proto.max_sims} simulations "
-                                    f"(levels {', '.join(f'{x:.4g}' for x, _ in levels)}); raise max_sims")
+                                    f"(levels {', '.join(f'{x:.4g}' for x, _ in levels)}); from Python raise "
+                                    "TiltProtocol.max_sims; from the command line the joints' law is the suspect")
         lam, bracket, collapse, stable = res.hi, (res.lo, res.hi), res.hi_run, res.lo_run
     elif proto.kind == "staircase":
         load = TiltStairs(proto.step, proto.stair_hold, g=settings.g)
@@ -389,7 +467,7 @@ def tilt(target, settings: Settings | None = None, protocol: TiltProtocol | None
     res = TiltResult(label or model.name, model, settings, proto, float(lam), (float(bracket[0]), float(bracket[1])),
                      n, time.perf_counter() - wall0, collapse.mode if collapse else "none",
                      collapse.joints if collapse else [], levels, collapse, stable,
-                     detect.criterion(settings, model), run_provenance(settings.engine))
+                     detect.criterion(settings, model), run_provenance(settings.engine, settings.engine_options))
     if check and assembly is not None:
         # the guess's LP is the reference unless both frictions prevent sliding (then the LP without friction)
         same = lp is not None and not prevents_sliding(settings.mu_joint, settings.mu_base)

@@ -5,18 +5,68 @@ from __future__ import annotations
 import csv
 import math
 from collections import Counter
+from dataclasses import dataclass, fields
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.experiments.contract import Column, Result, Schema
 from dem.experiments.tilt.ensemble import ensemble_study, tilt_ensembles
 from specimens.imperfection import Imperfection
 
 #: Seed of the campaign's realisations (each specimen's ensemble is realisations 0..n-1 of it).
 LAB_SEED = 1
+
+
+@dataclass(frozen=True)
+class SpecimenLab(Result):
+    """One specimen's row of the lab table: the laboratory's tilts (none for a prediction), the LP with ideal
+    and effective contact, the DEM with ideal contact (the tilt step's) and the ensemble's with calibrated
+    joints. The comparison with the laboratory (the last four columns) only for a tested specimen; a table
+    without one has no such columns (:meth:`schema`)."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("kind", "str"), Column("lambda_lab_mean", "float"), Column("lambda_lab_sd", "float"),
+        Column("mode_lab", "str"), Column("lambda_lp_ideal", "float"), Column("contact", "float"),
+        Column("lambda_lp_effective", "float"), Column("lambda_dem_ideal", "float"),
+        Column("lambda_dem_effective_mean", "float"), Column("lambda_dem_effective_sd", "float"),
+        Column("n_realisations", "int"), Column("mode_dem", "str"), Column("modes_dem", "str"),
+        Column("mode_agrees", "bool"), Column("within_2sd_or_15pct", "bool"), Column("err_dem_vs_lab_pct", "float", "%"),
+        Column("err_ideal_lp_vs_lab_pct", "float", "%"),
+    ))
+    TESTED_ONLY: ClassVar[tuple[str, ...]] = ("mode_agrees", "within_2sd_or_15pct", "err_dem_vs_lab_pct",
+                                              "err_ideal_lp_vs_lab_pct")
+
+    id: str
+    kind: str  # laboratory | prediction
+    lambda_lab_mean: float
+    lambda_lab_sd: float
+    mode_lab: str
+    lambda_lp_ideal: float
+    contact: float
+    lambda_lp_effective: float
+    lambda_dem_ideal: float
+    lambda_dem_effective_mean: float
+    lambda_dem_effective_sd: float
+    n_realisations: int
+    mode_dem: str
+    modes_dem: str  # "MODE:COUNT" apart by spaces
+    mode_agrees: bool | None = None
+    within_2sd_or_15pct: bool | None = None
+    err_dem_vs_lab_pct: float | None = None
+    err_ideal_lp_vs_lab_pct: float | None = None
+
+    @classmethod
+    def schema(cls, tested: bool) -> Schema:
+        """The table's columns: with the comparison with the laboratory if a specimen of it was tested."""
+        return cls.SCHEMA if tested else Schema(tuple(c for c in cls.SCHEMA.columns if c.name not in cls.TESTED_ONLY))
+
+    def rows(self) -> list[dict]:
+        return [{f.name: getattr(self, f.name) for f in fields(self)}]
 
 
 def lab_plan(ctx: CampaignContext) -> tuple[list, list, int]:
@@ -55,26 +105,21 @@ def step_lab(ctx: CampaignContext, d: Path) -> dict:
         t = lab.get(s.id)
         modes = Counter(ens.modes)
         mode = modes.most_common(1)[0][0] if modes else "failed"
-        row = {
-            "id": s.id, "kind": "laboratory" if t else "prediction",
-            "lambda_lab_mean": t.lambda_mean if t else math.nan, "lambda_lab_sd": t.lambda_sd if t else math.nan,
-            "mode_lab": t.mode if t else "", "lambda_lp_ideal": lp_lambda(s.arch, 1.0), "contact": ens.contact,
-            "lambda_lp_effective": lp_lambda(s.arch, ens.contact), "lambda_dem_ideal": dem_ideal.get(s.id, math.nan),
-            "lambda_dem_effective_mean": ens.lambda_mean,
-            "lambda_dem_effective_sd": ens.lambda_sd if len(ens.lambdas) > 1 else math.nan,
-            "n_realisations": len(ens.lambdas), "mode_dem": mode,
-            "modes_dem": " ".join(f"{m}:{k}" for m, k in sorted(modes.items())),
-        }
+        lp_ideal, versus = lp_lambda(s.arch, 1.0), {}
         if t:
-            # the laboratory's sliding is a three-interface mechanism: hinges and a slider ("mixed" in the DEM)
-            row["mode_agrees"] = mode == t.mode or (t.mode == "sliding" and mode == "mixed")
             tol = max(2 * t.lambda_sd, 0.15 * t.lambda_mean)
-            row["within_2sd_or_15pct"] = abs(ens.lambda_mean - t.lambda_mean) <= tol
-            row["err_dem_vs_lab_pct"] = 100 * (ens.lambda_mean / t.lambda_mean - 1)
-            row["err_ideal_lp_vs_lab_pct"] = 100 * (row["lambda_lp_ideal"] / t.lambda_mean - 1)
-        rows.append(row)
-    keys = list(dict.fromkeys(k for r in rows for k in r))
-    write_csv(d / "lab.csv", [{k: r.get(k, "") for k in keys} for r in rows])
+            # the laboratory's sliding is a three-interface mechanism: hinges and a slider ("mixed" in the DEM)
+            versus = {"mode_agrees": mode == t.mode or (t.mode == "sliding" and mode == "mixed"),
+                      "within_2sd_or_15pct": abs(ens.lambda_mean - t.lambda_mean) <= tol,
+                      "err_dem_vs_lab_pct": 100 * (ens.lambda_mean / t.lambda_mean - 1),
+                      "err_ideal_lp_vs_lab_pct": 100 * (lp_ideal / t.lambda_mean - 1)}
+        rows += SpecimenLab(
+            s.id, "laboratory" if t else "prediction", t.lambda_mean if t else math.nan,
+            t.lambda_sd if t else math.nan, t.mode if t else "", lp_ideal, ens.contact, lp_lambda(s.arch, ens.contact),
+            dem_ideal.get(s.id, math.nan), ens.lambda_mean, ens.lambda_sd if len(ens.lambdas) > 1 else math.nan,
+            len(ens.lambdas), mode, " ".join(f"{m}:{k}" for m, k in sorted(modes.items())), **versus).rows()
+    schema = SpecimenLab.schema(any(r["kind"] == "laboratory" for r in rows))
+    write_csv(d / "lab.csv", [{k: r[k] for k in schema.names} for r in rows], schema)
 
     fig = Figure(figsize=(7.5, 4.6))
     ax = fig.subplots()

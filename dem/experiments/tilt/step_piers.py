@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, fields
 from pathlib import Path
+from typing import ClassVar
 
 from matplotlib.figure import Figure
 
 from analytic.limit.limit_discrete import solve_lp
 from dem.common.campaign import CampaignContext, pct, studies_dir, write_csv
+from dem.experiments.contract import Column, Result, Schema
 from dem.experiments.tilt.case import DEM_CASE, make_case
 from dem.studies.sweep import case_key, run_study
 from specimens.blocks import discretise
@@ -24,6 +27,33 @@ PIER_HEIGHTS_FULL = (0.0, 0.5, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5)
 PIER_WIDTH_T, PIER_COURSES = 3.0, 4
 #: The study's arch when the campaign has it (a mid-catalogue pointed arch), else its first specimen.
 PIERS_SPECIMEN = "Sh06-Sd015"
+
+
+@dataclass(frozen=True)
+class PierTilt(Result):
+    """One pier height's row of the piers table: the LP (no sliding, reference friction) with its hinges, the
+    DEM tilt with no sliding and its hinges."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("pier_height_m", "float", "m"), Column("height_over_rise", "float"), Column("lambda_lp_no_sliding", "float"),
+        Column("hinges_lp", "str"), Column("lambda_lp_reference", "float"), Column("lambda_dem_no_sliding", "float"),
+        Column("err_dem_vs_lp_pct", "float", "%"), Column("hinges_dem", "str"), Column("mode_dem", "str"),
+        Column("hinges_in_piers", "int"),
+    ))
+
+    pier_height_m: float
+    height_over_rise: float
+    lambda_lp_no_sliding: float
+    hinges_lp: str  # "JOINT:FACE" (face's first three letters) apart by spaces
+    lambda_lp_reference: float
+    lambda_dem_no_sliding: float
+    err_dem_vs_lp_pct: float
+    hinges_dem: str  # the DEM's hinged joints apart by spaces
+    mode_dem: str
+    hinges_in_piers: int  # the LP's hinges in the piers' joints
+
+    def rows(self) -> list[dict]:
+        return [{f.name: getattr(self, f.name) for f in fields(self)}]
 
 
 def piers_plan(ctx: CampaignContext) -> tuple:
@@ -60,15 +90,10 @@ def step_piers(ctx: CampaignContext, d: Path) -> dict:
         r = rec.results if ok else {}
         dem_hinges = [n for n, st in zip(r.get("joint_names") or [], r.get("joint_states") or []) if st == "hinge"]
         lam = float(r["lambda"]) if ok else math.nan
-        rows.append({
-            "pier_height_m": h, "height_over_rise": round(h / spec.arch.rise, 4),
-            "lambda_lp_no_sliding": lp.lam, "hinges_lp": " ".join(f"{j}:{f[:3]}" for j, f in lp.hinges),
-            "lambda_lp_reference": lp_ref.lam, "lambda_dem_no_sliding": lam,
-            "err_dem_vs_lp_pct": pct(lam, lp.lam), "hinges_dem": " ".join(dem_hinges),
-            "mode_dem": str(r["mode"]) if ok else "failed",
-            "hinges_in_piers": sum(j.startswith(("LP", "RP")) for j, _ in lp.hinges),
-        })
-    write_csv(d / "piers.csv", rows)
+        rows += PierTilt(h, round(h / spec.arch.rise, 4), lp.lam, " ".join(f"{j}:{f[:3]}" for j, f in lp.hinges),
+                         lp_ref.lam, lam, pct(lam, lp.lam), " ".join(dem_hinges), str(r["mode"]) if ok else "failed",
+                         sum(j.startswith(("LP", "RP")) for j, _ in lp.hinges)).rows()
+    write_csv(d / "piers.csv", rows, PierTilt.SCHEMA)
 
     fig = Figure(figsize=(6.4, 4.2))
     ax = fig.subplots()

@@ -1,14 +1,17 @@
 """The tilt step: the virtual tilt test of every specimen against limit analysis."""
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
+from dem.experiments.contract import Column, Result, Schema
 from dem.experiments.tilt.case import DEM_CASE, make_case, replay_tilt
-from dem.experiments.tilt.check import LP_TOLERANCE, check, lp_check_of, reference_lp
+from dem.experiments.tilt.check import LP_TOLERANCE, TiltCheck, check, lp_check_of, reference_lp
 from dem.experiments.tilt.figure import save_tilt_figure
 from dem.studies.sweep import case_key, run_study
 from specimens.blocks import discretise
@@ -24,6 +27,54 @@ def tilt_frictions(ctx: CampaignContext) -> dict[str, tuple[float, float]]:
 
 
 # ------------------------------------------------------------------------------------ tilt
+def _by_friction(kind: str) -> tuple[Column, ...]:
+    return (Column(f"lambda_dem_{kind}", "float"), Column(f"mode_{kind}", "str"), Column(f"joints_{kind}", "str"),
+            Column(f"n_sims_{kind}", "int"))
+
+
+@dataclass(frozen=True)
+class SpecimenTilt(Result):
+    """One specimen's row of the tilt table: its tilts by friction (``checks``, the reference first, with no
+    sliding in the full campaign only) beside the LP of its blocks. ``SCHEMA`` holds every column; a quick
+    campaign's table has those of the frictions it ran (:meth:`schema`)."""
+
+    SCHEMA: ClassVar[Schema] = Schema((
+        Column("id", "str"), Column("Sh", "float"), Column("Sd", "float"),
+        *_by_friction("reference"), *_by_friction("no_sliding"),
+        Column("lambda_lp_reference", "float"), Column("err_reference_vs_lp_pct", "float", "%"),
+        Column("lambda_lp_no_sliding", "float"), Column("err_no_sliding_pct", "float", "%"),
+        Column("ratio_reference_to_no_sliding", "float"),
+    ))
+    NO_SLIDING_ONLY: ClassVar[tuple[str, ...]] = (*(c.name for c in _by_friction("no_sliding")), "err_no_sliding_pct",
+                                                  "ratio_reference_to_no_sliding")
+
+    id: str
+    Sh: float
+    Sd: float
+    checks: dict[str, TiltCheck]  # friction ("reference", "no_sliding") -> the tilt beside its LP
+    joints: dict[str, str]  # friction -> the joints that moved, "NAME:STATE" apart by spaces
+    lambda_lp_reference: float
+    lambda_lp_no_sliding: float
+
+    @classmethod
+    def schema(cls, no_sliding: bool) -> Schema:
+        """The table's columns: with the tilts with no sliding or without them."""
+        return cls.SCHEMA if no_sliding else Schema(tuple(c for c in cls.SCHEMA.columns
+                                                          if c.name not in cls.NO_SLIDING_ONLY))
+
+    def rows(self) -> list[dict]:
+        out = {"id": self.id, "Sh": self.Sh, "Sd": self.Sd}
+        for k, row in self.checks.items():
+            out |= {f"lambda_dem_{k}": row.lam, f"mode_{k}": row.mode, f"joints_{k}": self.joints[k],
+                    f"n_sims_{k}": row.n_sims}
+        out |= {"lambda_lp_reference": self.lambda_lp_reference, "err_reference_vs_lp_pct": self.checks["reference"].err_pct,
+                "lambda_lp_no_sliding": self.lambda_lp_no_sliding}
+        if "no_sliding" in self.checks:
+            out |= {"err_no_sliding_pct": self.checks["no_sliding"].err_pct,
+                    "ratio_reference_to_no_sliding": out["lambda_dem_reference"] / out["lambda_dem_no_sliding"]}
+        return [out]
+
+
 def step_tilt(ctx: CampaignContext, d: Path) -> dict:
     """Tilt test of every specimen at the reference friction and with no sliding, beside the LP."""
     frictions = tilt_frictions(ctx)
@@ -44,8 +95,7 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
         asm = discretise(s.arch, config=ctx.config, contact=ctx.contact_of(s))
         lp = {k: reference_lp(asm, mj, mb) for k, (mj, mb) in
               (("reference", (REFERENCE_MU_JOINT, REFERENCE_MU_BASE)), ("no_sliding", (NO_SLIDING_MU, NO_SLIDING_MU)))}
-        out = {"id": s.id, "Sh": round(s.arch.Sh, 6), "Sd": round(s.arch.Sd, 6)}
-        rows_k = {}
+        rows_k, joints = {}, {}
         for k, (mj, mb) in frictions.items():
             rec = by_key.get(case_key(cases[(s.id, k)]))
             ok = rec is not None and rec.ok
@@ -55,20 +105,12 @@ def step_tilt(ctx: CampaignContext, d: Path) -> dict:
             rows_k[k] = row = check(s.id, asm, ctx.engine, mj, mb, float(res_k["lambda"]) if ok else float("nan"),
                                     str(res_k["mode"]) if ok else "failed", states,
                                     int(res_k.get("n_sims", 0)) if ok else 0, lp=lp[k])
-            out[f"lambda_dem_{k}"] = row.lam
-            out[f"mode_{k}"] = row.mode
-            out[f"joints_{k}"] = " ".join(f"{n}:{st}" for n, st, _ in states if st != "closed")
-            out[f"n_sims_{k}"] = row.n_sims
+            joints[k] = " ".join(f"{n}:{st}" for n, st, _ in states if st != "closed")
             if ok:
                 checks.append(lp_check_of(row, lp[k], ctx.law_of(s).get("contact_law", "rigid")))
-        out["lambda_lp_reference"] = lp["reference"].lam
-        out["err_reference_vs_lp_pct"] = rows_k["reference"].err_pct
-        out["lambda_lp_no_sliding"] = lp["no_sliding"].lam
-        if "no_sliding" in frictions:
-            out["err_no_sliding_pct"] = rows_k["no_sliding"].err_pct
-            out["ratio_reference_to_no_sliding"] = out["lambda_dem_reference"] / out["lambda_dem_no_sliding"]
-        rows.append(out)
-    write_csv(d / "tilt.csv", rows)
+        rows += SpecimenTilt(s.id, round(s.arch.Sh, 6), round(s.arch.Sd, 6), rows_k, joints, lp["reference"].lam,
+                             lp["no_sliding"].lam).rows()
+    write_csv(d / "tilt.csv", rows, SpecimenTilt.schema("no_sliding" in frictions))
 
     fig = Figure(figsize=(7, 4.8))
     ax = fig.subplots()

@@ -138,6 +138,15 @@ class StandIns:
             return hit, ("rocking" if hit else "none"), ("after-first-rebound" if hit else None)
 
         mp.setattr(thresholds, "collapses", collapses)
+
+        def checked(args):  # the thresholds' checks (settled or a range): the same truth, not counted in runs
+            name, model, st, protocol, motion_fn, a, f = args
+            factor, window, mode, _ = SHAKE_TRUTH[f]
+            t = factor * self.four_bar[f]
+            hit = a >= t and not (window and window[0] * t <= a < window[1] * t)
+            return thresholds.Reading(name, st.engine, st.dt, a, hit, mode if hit else "none")
+
+        mp.setattr(thresholds, "_read_one", checked)
         # the time histories beside the shake thresholds: short real runs (0.05 s)
         real_shake = shake.shake
         _everywhere(mp, shake, "shake", lambda model, motion, settings=None, protocol=None, **kw:
@@ -493,6 +502,7 @@ def test_shake_table_holds_the_stand_in_thresholds_against_the_four_bar(campaign
         assert float(r["ratio_dem_to_four_bar"]) == pytest.approx(a / fb, rel=1e-12)
         assert (r["dem_mode"], r["collapse_phase"]) == (mode, phase)
         assert int(r["n_sims"]) == sum(1 for run in stand.runs if run[1] == "sine" and run[2] == f)
+        assert r["verdict"] in ("settled", "unchecked")  # every check reads the stand-in's bracket alike
         if window is None:
             assert r["survival_bands_above"] == ""
             continue
@@ -510,8 +520,14 @@ def test_shake_findings_agree_with_the_table(campaign):
         "ratio": r"DEM / four-bar collapse amplitude ratio: ([\d.]+)-([\d.]+) over (\d+) \(specimen, frequency\) "
                  r"pairs; the four-bar is conservative \(ratio > 1\) in (\d+) of them\.",
         "windows": r"Survival windows above the first collapse amplitude: (.+)\.",
+        "verdicts": r"Thresholds settled: (\d+) of (\d+); a range: (\d+); unchecked: (\d+)(?: \((.+)\))?\. "
+                    r"The checks ran (\d+) runs in \d+ s\.",
     })
-    assert set(m) == {"ratio", "windows"}
+    assert set(m) == {"ratio", "windows", "verdicts"}
+    counts = [int(m["verdicts"][k]) for k in (1, 3, 4)]
+    assert int(m["verdicts"][2]) == len(rows) == sum(counts)
+    assert counts == [sum(r["verdict"] == k for r in rows) for k in ("settled", "range", "unchecked")]
+    assert int(m["verdicts"][6]) == sum(int(r["check_runs"]) for r in rows)
     ratios = [float(r["ratio_dem_to_four_bar"]) for r in rows]
     assert _quotes(m["ratio"][1], min(ratios), 2)
     assert _quotes(m["ratio"][2], max(ratios), 2)
@@ -635,8 +651,14 @@ def test_campaign_h5_holds_the_csv_tables_and_the_manifest(campaign):
                 ds = g[col][()]
                 if ds.dtype.kind == "f":
                     np.testing.assert_array_equal(ds, [_f(r[col]) for r in rows])
+                elif ds.dtype.kind == "i":  # a column of whole numbers stays whole
+                    assert ds.tolist() == [int(r[col]) for r in rows]
+                elif ds.dtype.kind == "b":
+                    assert ds.tolist() == [{"True": True, "False": False}[r[col]] for r in rows]
                 else:
                     assert [v.decode() for v in ds] == [r[col] for r in rows]
+        # typed, not text: the tables' counts and flags read back as numbers and booleans
+        assert f["tables/tilt/n_sims_reference"].dtype.kind == "i" and f["tables/assess/frp"].dtype.kind == "b"
         # a number column stays a number: the tilt lambdas read back exactly
         lam = f["tables/tilt/lambda_dem_reference"][()]
         assert lam.dtype.kind == "f" and lam.tolist() == [float(r["lambda_dem_reference"]) for r in _rows(out, "tilt")]

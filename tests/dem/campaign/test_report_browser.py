@@ -108,12 +108,12 @@ def test_the_report_fits_the_page(tmp_path):
 
 def test_the_summary_reads_the_steps_tables():
     """Per specimen the laboratory's, the limit analysis's and the DEM's lambda and the least shake threshold,
-    read from the steps' tables; a step not run leaves its column blank."""
-    tables = {"lab": [{"id": "A", "lambda_lab_mean": "0.41", "lambda_dem_effective_mean": "0.39",
-                       "lambda_lp_effective": "0.40"}],
-              "analytic": [{"id": "A", "lambda_discrete_glued": "0.42"}, {"id": "B", "lambda_discrete_glued": "0.3"}],
-              "shake": [{"id": "A", "freq_Hz": "2", "a_dem_g": "0.5"}, {"id": "A", "freq_Hz": "4", "a_dem_g": "0.35"},
-                        {"id": "A", "freq_Hz": "8", "a_dem_g": "nan"}]}
+    read from the steps' typed tables; a step not run leaves its column blank."""
+    tables = {"lab": [{"id": "A", "lambda_lab_mean": 0.41, "lambda_dem_effective_mean": 0.39,
+                       "lambda_lp_effective": 0.40}],
+              "analytic": [{"id": "A", "lambda_discrete_glued": 0.42}, {"id": "B", "lambda_discrete_glued": 0.3}],
+              "shake": [{"id": "A", "freq_Hz": 2.0, "a_dem_g": 0.5}, {"id": "A", "freq_Hz": 4.0, "a_dem_g": 0.35},
+                        {"id": "A", "freq_Hz": 8.0, "a_dem_g": float("nan")}]}
     page = _summary_html(tables)
     rows = re.findall(r"<tr><td>(\w)</td>(.*?)</tr>", page)
     assert [r[0] for r in rows] == ["A", "B"]

@@ -18,14 +18,14 @@ from dem.cli import main
     (["tilt", "Sh06-Sd015", "--joints", "table-5.1", "--kn", "1e8"], "--joints table-5.1 sets the joints"),
     (["shake", "Sh06-Sd015", "--sine", "4", "--amplitude", "0.3", "--kn", "1e8", "--damping-xi", "3"],
      "damping ratio xi = 3 is outside 0-2"),
-    (["shake", "Sh06-Sd015", "--sine", "4", "--amplitude", "0.3", "--kn", "1e8", "--ks", "1e8"], "--ks: the engines"),
+    (["shake", "Sh06-Sd015", "--sine", "4", "--amplitude", "0.3", "--kn", "1e8", "--ks", "1e8"], "--ks does nothing here: the engines"),
     (["threshold", "Sh06-Sd015", "--sine", "4", "--contact-law", "compliant"], "compliant contact law needs the normal joint stiffness kn > 0"),
     (["threshold", "Sh06-Sd015", "--sine", "4", "--kn", "1e8", "--damping-beta=-1e-3"],
      "damping_beta must be a number >= 0"),
     (["fragility", "Sh06-Sd015", "--sine", "2", "--amplitudes", "0.3:0.4:0.05", "--realizations", "2", "--kn", "1e8",
       "--damping-beta", "1e-3", "--damping-xi", "1"], "not both"),
-    (["domain", "Sh06-Sd015", "--kn", "1e8"], "are the DEM's joints (--engine dem)"),
-    (["domain", "Sh06-Sd015", "--youngs", "1e9"], "are the DEM's joints (--engine dem)"),
+    (["domain", "Sh06-Sd015", "--kn", "1e8"], "does nothing here: it is the DEM's (--engine dem)"),
+    (["domain", "Sh06-Sd015", "--youngs", "1e9"], "does nothing here: it is the DEM's (--engine dem)"),
     (["domain", "Sh06-Sd015", "--engine", "dem", "--kn", "inf"], "kn must be a number >= 0, got inf"),
     (["domain", "Sh06-Sd015", "--dt", "1e-4"], "--dt does nothing here: it is the DEM's time step"),
     (["domain", "Sh06-Sd015", "--engine", "mujoco", "--dt", "1e-9"], "time step dt = 1e-09 s is too small"),
@@ -51,7 +51,7 @@ from dem.cli import main
     (["domain", "Sh02-Sd020", "--engine", "dem", "--workers", "-1"], "--workers: must be a whole number"),
     (["map", "--workers", "0"], "--workers: must be a whole number"),
     (["compare-engines", "--workers", "1.5"], "--workers: must be a whole number"),
-    (["tilt", "Sh02-Sd020", "--workers", "2"], "go with --ensemble"),
+    (["tilt", "Sh02-Sd020", "--workers", "2"], "--workers does nothing here: it runs the realisations of an --ensemble"),
     (["shake", "--Sh", "0.6", "--Sd", "0.15", "--Rc", "1e30", "--sine", "4", "--amplitude", "0.3"], "between 0.001 and 1000 m"),
     (["shake", "Sh02-Sd020", "--sine", "1e9", "--amplitude", "0.3"], "--sine must be a frequency in [0.01, 100] Hz"),
     (["shake", "Sh02-Sd020", "--sine", "4", "--amplitude", "1e300"], "--amplitude must be in (0, 100] g"),
@@ -89,7 +89,7 @@ from dem.cli import main
     (["compare-engines", "--specimens", " "], "specimens: give 'all' or ids"),
     (["threshold", "Sh02-Sd020", "--sine", "4", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.001, 0.5]"),
     (["domain", "Sh02-Sd020", "--tol", "1e-30"], "--tol must be a relative tolerance in [0.0001, 0.5]"),
-    (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--mu-base", "1e-30"], "--mu-base must be 0.01 to 1000"),
+    (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--mu-base", "1e-30"], "mu_base = 1e-30 is outside 0.01-1000"),
     (["map", "--specimens", "Sh02-Sd020", "--resume", "meshes"], "is a folder; a study is one .h5 file"),
     (["map", "--specimens", "Sh02-Sd020", "--out", "m.h5", "--scheduler", "garbage"], "address is tcp://HOST:PORT"),
     (["draw", "Sh02-Sd020", "--voussoirs", "100000", "--out", "v.png"], "--voussoirs must be 1 to 100"),
@@ -187,11 +187,11 @@ from dem.cli import main
     (["modes", "Sh02-Sd020", "--kn", "1e8", "--plot", "old.png"], "exists"),
     (["threshold", "Sh02-Sd020", "--sine", "4", "--scheduler", "tcp://127.0.0.1:9"], "cannot connect to the Dask scheduler"),
     (["domain", "Sh02-Sd020", "--engine", "dem", "--scheduler", "tcp://127.0.0.1:9"], "cannot connect to the Dask"),
-    (["domain", "Sh02-Sd020", "--scheduler", "tcp://127.0.0.1:9"], "--scheduler runs the DEM's domain"),
+    (["domain", "Sh02-Sd020", "--scheduler", "tcp://127.0.0.1:9"], "--scheduler does nothing here: it runs the DEM's domain"),
     (["campaign", "--out", "c", "--scheduler", "tcp://127.0.0.1:9"], "cannot connect to the Dask scheduler"),
     (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--building-damping", "-0.0"],
      "--building-damping belongs to a mechanism at a height"),
-    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--match-periods", "0.1,1"], "belong to --records"),
+    (["assess", "Sh02-Sd020", "--spectrum", "ec8", "--ag", "0.2", "--match-periods", "0.1,1"], "--match-periods does nothing here: it belongs to --records"),
     (["assess", "noh-gumbad", "--spectrum", "ec8", "--ag", "-1"], "--ag must be in (0, 3] g"),
 ])
 def test_refused_in_one_line_with_nothing_written(tmp_path, monkeypatch, capsys, argv, msg):
@@ -261,12 +261,12 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
 
     import numpy as np
 
-    from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
+    from dem.common.options import ARCH_OPTIONS, add_options, arch_from_args, discretisation_kwargs
     from specimens.blocks import discretise
     from foundation.errors import ArchdemInputError
 
     p = argparse.ArgumentParser()
-    add_arch_arguments(p)
+    add_options(p, "tilt", *ARCH_OPTIONS)
     args = p.parse_args([f"--{k}={v!r}" for k, v in {**arch, **extra}.items()])
     try:
         _, a = arch_from_args(args)
@@ -289,12 +289,12 @@ def _outcome(options: dict) -> str:
     """"built" or "refused": the arch options through the command's parser, as the property above runs them."""
     import argparse
 
-    from dem.common.options import add_arch_arguments, arch_from_args, discretisation_kwargs
+    from dem.common.options import ARCH_OPTIONS, add_options, arch_from_args, discretisation_kwargs
     from specimens.blocks import discretise
     from foundation.errors import ArchdemInputError
 
     p = argparse.ArgumentParser()
-    add_arch_arguments(p)
+    add_options(p, "tilt", *ARCH_OPTIONS)
     try:
         _, a = arch_from_args(p.parse_args([f"--{k}={v!r}" for k, v in options.items()]))
         discretise(a, **discretisation_kwargs(p.parse_args([]), a))

@@ -70,7 +70,7 @@ def test_outputs_and_inputs_checked_before_any_run(tmp_path, monkeypatch, capsys
     # a default given by hand is given: it still does nothing
     ([*TILT, "--protocol", "staircase", "--start", "auto"], "--start does nothing here"),
     (["shake", "Sh02-Sd020", *SINE, "--baseline"], "--baseline goes with --record"),
-    (["shake", "Sh02-Sd020", *SINE, "--units", "g"], "--units goes with --record"),
+    (["shake", "Sh02-Sd020", *SINE, "--units", "g"], "--units does nothing here: it is a drawing's length unit (--geometry) or a record's"),
     (["compare-engines", "--engines", "pybullet,pybullet"], "give two different engines"),
     (["rock", "Sh02-Sd020", "--freq", "4", "--amplitude", "0.5", "--duration", "0.3"], "--duration does nothing"),
     (["rock", "Sh02-Sd020", "--input", "A", "--duration", "0.3", "--amplitude", "0.5", "--freq", "4"],

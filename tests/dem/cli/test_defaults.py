@@ -94,7 +94,7 @@ ARGV = {
     "domain": ["Sh02-Sd015"], "rock": ["Sh02-Sd015"], "shake": ["Sh02-Sd015"],
     "threshold": ["Sh02-Sd015", "--sine", "4"], "fragility": ["Sh02-Sd015", "--realizations", "1"],
     "modes": ["Sh02-Sd015", "--kn", "1e8"],
-    "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [], "compare-shake": [],
+    "animate": ["run.h5", "--out", "a.gif"], "compare-engines": [], "compare-shake": [], "settle": ["Sh02-Sd015"],
 }
 
 

@@ -74,3 +74,20 @@ def test_omega_r_of_the_catalogue_is_of_the_studys_order():
 
     kn, w_r, _ = STUDY_JOINTS["Sh06-Sd015"]
     assert rotational_impact_frequency(as_model("Sh06-Sd015", config="free"), kn) == pytest.approx(w_r, rel=0.06)
+
+
+def test_a_damping_far_above_critical_is_refused_before_any_simulation():
+    """beta_R given as seconds is checked as the damping ratio it makes at omega_r (the ratio's own bound)."""
+    from dem.core.contact import rayleigh_beta, rotational_impact_frequency
+    from dem.core.model import from_assembly
+    from dem.core.settings import MAX_DAMPING_XI, Settings
+    from foundation.errors import ArchdemInputError
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    model = from_assembly(discretise(get_specimen("Sh06-Sd015").arch))
+    w = rotational_impact_frequency(model, 1e9)
+    ok = Settings(contact_law="compliant", kn=1e9, damping_beta=0.99 * 2 * MAX_DAMPING_XI / w)
+    assert rayleigh_beta(ok, model) == ok.damping_beta
+    with pytest.raises(ArchdemInputError, match="damping ratio xi"):
+        rayleigh_beta(Settings(contact_law="compliant", kn=1e9, damping_beta=1e6), model)

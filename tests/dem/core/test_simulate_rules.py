@@ -318,3 +318,16 @@ def test_ending_past_the_criterion_is_a_collapse(block, rest):
     eng = ScriptedEngine(frames, SC.record_steps)
     sim = simulate(block, SC, Rest(), (len(frames) - 1) * SC.record_every, engine=eng, rest=rule, rest_span=True)
     assert not sim.collapsed and sim.t_exceed == _record_t(1)
+
+
+def test_an_engine_running_other_options_than_the_settings_is_refused(block):
+    from dem.core.engines.options import PyBulletOptions
+    from foundation.errors import ArchdemInputError
+
+    frames = [_slid(block, 0.0, 0.0)] * 3
+    eng = ScriptedEngine(frames, S.record_steps)
+    eng.options = PyBulletOptions(solver_iterations=50)
+    with pytest.raises(ArchdemInputError, match="other options than settings.engine_options"):
+        simulate(block, S, Rest(), 2 * S.record_every, engine=eng)
+    eng.options = S.engine_options  # the settings' own: runs
+    assert simulate(block, S, Rest(), 2 * S.record_every, engine=eng).steps == 2 * S.record_steps

@@ -67,7 +67,7 @@ def test_built_geometry_mass_and_friction():
                 mid = M.geom_dataid[gid]
                 v = M.mesh_vert[M.mesh_vertadr[mid]:M.mesh_vertadr[mid] + M.mesh_vertnum[mid]]
                 w = D.geom_xpos[gid] + v @ D.geom_xmat[gid].reshape(3, 3).T
-                ref = np.asarray(prism(poly, b.width, s.inflate).vertices)
+                ref = np.asarray(prism(poly, b.width, s.engine_options.inflate).vertices)
                 assert np.sort(w, axis=0) == pytest.approx(np.sort(ref, axis=0), abs=1e-7)
         mujoco.mj_forward(M, D)
         assert D.ncon > 0
@@ -134,3 +134,26 @@ def test_options_reach_the_model():
         assert v._m.opt.timestep == pytest.approx(DEFAULT_OPTIONS.max_dt)  # 0.5 ms -> 2 x 0.25 ms
     finally:
         v.close()
+    # options given to get_engine (Settings.engine_options) reach the model and its provenance
+    o = MuJoCoOptions(noslip_iterations=7, max_dt=1.25e-4)
+    v = get_engine(ENGINE, o)
+    v.build(m, _s(engine_options=o))
+    try:
+        assert v._m.opt.noslip_iterations == 7 and v._m.opt.timestep == pytest.approx(1.25e-4)
+        assert v.versions()["mujoco_options"] == o.to_dict()
+    finally:
+        v.close()
+
+
+def test_restitution_is_refused_not_dropped():
+    """MuJoCo's soft contacts have no restitution coefficient: a setting it cannot run is refused in one line."""
+    from dem.core.engines import get_engine
+    from dem.core.model import from_assembly
+    from dem.core.settings import Settings
+    from foundation.errors import ArchdemInputError
+    from specimens.catalogue import get_specimen
+    from specimens.blocks import discretise
+
+    eng = get_engine("mujoco")
+    with pytest.raises(ArchdemInputError, match="plastic impacts only"):
+        eng.build(from_assembly(discretise(get_specimen("Sh06-Sd015").arch)), Settings(engine="mujoco", restitution=0.3))

@@ -102,6 +102,8 @@ def test_cli_one_case_each_engine_and_resume(tmp_path, capsys):
     (group,) = res["features"]
     assert group["features"]["first threshold"]["class"] == "common"
     assert res["pairwise"]["1"]["mujoco/pybullet"]["first threshold"] == [1, 1] and res["step_agreement"] == {}
+    # the settled-or-range flag needs MuJoCo at its shakes' step (x0.5): not run here
+    assert [(v["status"], v["why"]) for v in res["verdicts"]] == [("unchecked", "no mujoco x0.5 reading")]
     assert (tmp_path / "s.csv").read_text().count("\n") == 3
     # the study is never overwritten; a resume runs nothing new and reads the same
     assert main(argv) == 2
@@ -182,3 +184,45 @@ def test_step_agreement_of_two_steps_and_the_groups_that_move():
     assert (m["freq"], m["moved"]) == (6.0, ["a"])
     assert m["values"][("a", 0.25)] == 1.4 and m["values"][("b", 1.0)] == 1.4 and len(m["values"]) == 4
     assert step_moves(records, engines=("b",)) == []
+
+
+def test_the_settled_or_range_flag_of_a_small_synthetic_study():
+    """The thresholds' check rule on a study's readings: the default (MuJoCo x0.5) against MuJoCo at half
+    its step and, at 6 Hz with the joints free to slide, LMGC90 at its default step."""
+    from dem.experiments.compare_engines.shake import default_step, group_verdict, verdict_counts, verdicts
+    from dem.studies.sweep import CaseRecord
+
+    assert default_step("mujoco") == 0.5  # 0.125 ms, the shakes' default step
+    far = _res(1.4, [(1.3, False, "-"), (1.4, True, "rocking"), (1.7, True, "rocking")])
+    near = _res(0.72, [(0.6, False, "-"), (0.72, True, "rocking"), (1.7, True, "rocking")])
+    none = _res(math.nan, [(0.5, False, "-"), (1.7, False, "-")])
+
+    def rec(sid, friction, freq, engine, step, res):
+        p = {"id": sid, "friction": friction, "freq": freq, "engine": engine, "step": step}
+        return CaseRecord(f"{sid}{friction}{engine}{step}{freq}", p, "ok", res)
+
+    records = [
+        # 6 Hz, joints: the half step agrees (0.70 / 0.72: 3 %), LMGC90 stands to the top -> a range open above
+        rec("A", "joints", 6.0, "mujoco", 0.5, BANDED), rec("A", "joints", 6.0, "mujoco", 0.25, near),
+        rec("A", "joints", 6.0, "lmgc90", 1.0, none),
+        # 2 Hz, joints: the half step only (outside the band), alike -> settled, LMGC90 not needed
+        rec("A", "joints", 2.0, "mujoco", 0.5, far), rec("A", "joints", 2.0, "mujoco", 0.25, far),
+        # 6 Hz, no sliding: the half step only, which moves 2x -> range [0.7, 1.4]
+        rec("A", "none", 6.0, "mujoco", 0.5, BANDED), rec("A", "none", 6.0, "mujoco", 0.25, far),
+        rec("A", "none", 6.0, "lmgc90", 1.0, BANDED),
+        # 8 Hz, joints, no LMGC90 reading: never settled
+        rec("A", "joints", 8.0, "mujoco", 0.5, far), rec("A", "joints", 8.0, "mujoco", 0.25, far),
+    ]
+    v = {(r["friction"], r["freq"]): r for r in verdicts(records)}
+    assert v[("joints", 6.0)]["status"] == "range" and v[("joints", 6.0)]["range_g"] == [0.7, None]
+    assert v[("joints", 6.0)]["why"] == "lmgc90 reads otherwise"
+    assert v[("joints", 2.0)]["status"] == "settled" and set(v[("joints", 2.0)]["readings"]) == {"mujoco@0.5",
+                                                                                               "mujoco@0.25"}
+    assert v[("none", 6.0)]["status"] == "range" and v[("none", 6.0)]["range_g"] == [0.7, 1.4]
+    assert v[("joints", 8.0)]["status"] == "unchecked" and "lmgc90 x1" in v[("joints", 8.0)]["why"]
+    assert verdict_counts(list(v.values())) == {"joints": {"range": 1, "settled": 1, "unchecked": 1},
+                                                "none": {"range": 1}}
+    # the margin: 5 % above the default reads alike, 8 % does not; none against none is alike
+    assert group_verdict({("mujoco", 0.5): 1.0, ("mujoco", 0.25): 1.05}, 2.0, 0.577, 10.0)["status"] == "settled"
+    assert group_verdict({("mujoco", 0.5): 1.0, ("mujoco", 0.25): 1.08}, 2.0, 0.577, 10.0)["status"] == "range"
+    assert group_verdict({("mujoco", 0.5): math.nan, ("mujoco", 0.25): math.nan}, 2.0, 10.0, 10.0)["status"] == "settled"

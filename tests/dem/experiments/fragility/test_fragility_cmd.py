@@ -7,7 +7,7 @@ import pytest
 
 from dem.cli import main
 
-BLOCK = ["--block", "0.05", "0.2", "--planar", "--mu-joint", "10", "--mu-base", "10"]
+BLOCK = ["--block", "0.05", "0.2", "--planar", "--mu-base", "10"]  # a block has no joint: no --mu-joint
 
 
 def _json(capsys, argv):

@@ -91,3 +91,19 @@ def test_bad_ensembles_are_refused():
         fragility("b", BLOCK, RIGID, Perturbation(), groups, 0, 1, "x.h5")
     with pytest.raises(ArchdemInputError, match="friction coefficient of variation"):
         Perturbation(friction_cov=math.nan)
+
+
+def test_a_spec_holds_the_study_and_its_cases():
+    """The spec's cases are the study's; a case's perturbation is the spec's, field for field."""
+    from dataclasses import asdict
+
+    from dem.experiments.fragility.run import FragilitySpec, make_cases
+
+    pert = Perturbation(edge_loss=1e-3, friction_cov=0.1)
+    groups = [("2 Hz", "g", [(0.3, sine_spec(2.0, 0.3)), (0.4, sine_spec(2.0, 0.4))])]
+    spec = FragilitySpec("b", BLOCK, RIGID, pert, groups, 3, 7, "x.h5")
+    cases = spec.cases()
+    assert cases == make_cases("b", BLOCK, RIGID, pert, groups, 3, 7) and len(cases) == 6
+    assert cases[0]["perturbation"] == asdict(pert) and cases[-1]["realisation"] == 2
+    with pytest.raises(ArchdemInputError, match="the seed must be a whole number"):
+        FragilitySpec("b", BLOCK, RIGID, pert, groups, 3, -1, "x.h5").cases()

@@ -91,6 +91,7 @@ def test_json_rows_and_table_carry_mu_star_na(tmp_path, capsys, monkeypatch):
     def fake(*a, **kw):
         return r
 
+    monkeypatch.setattr(fm, "catalogue_map", fake)  # the command runs its spec through it
     monkeypatch.setattr(map_cmd, "catalogue_map", fake)
     assert main(["map", "--specimens", "Sh06-Sd015", "--mu", "0.3,0.6", "--out", str(tmp_path / "m.h5")]) == 0
     head, row = capsys.readouterr().out.splitlines()[1:3]

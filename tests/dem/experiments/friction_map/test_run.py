@@ -355,3 +355,43 @@ def test_map_of_an_arch_on_piers(tmp_path, capsys, monkeypatch):
     code, _, err = _cli(["map", "--specimens", "Sh06-Sd015", "--out", str(tmp_path / "t.h5"), "--pier-height", "0.4",
                          "--pier-width", "0.04"], capsys)
     assert code == 2 and "narrower than the ring's springing" in err and not (tmp_path / "t.h5").exists()
+
+
+def test_the_map_declares_its_tables_once_and_prints_itself(tmp_path):
+    # a specimen's map built by hand: its summary row and its tilts' rows in their schemas' columns, read back
+    # typed from CSV; the printed table
+    from dem.common.tables import read_csv
+
+    nan = math.nan
+    a = fm.AnalyticCurves(np.array([0.3, 0.6]), np.array([0.2, 0.3]), np.array([0.2, 0.3]), 0.35, 0.35, 0.34, 0.17,
+                          0.415, 0.453, 0.442)
+    pts = [fm.MapPoint(0.3, 0.22, "sliding", "grid", 2, 1.5, "k1", {"L4": "slide"}),
+           fm.MapPoint(0.6, nan, "failed", "grid", 0, 0.1, "k2", {}, "boom")]
+    s = fm.SpecimenMap("Sh02-Sd020", get_specimen("Sh02-Sd020").arch, "glued", 1.0, pts,
+                       fm.Threshold(0.375, 0.4125, "bracketed", True), a)
+    r = fm.MapResult(tmp_path / "m.h5", "glued", 1.0, [0.3, 0.6], [s], 2, 1, 12.0, [1.5], 3)
+    summary, points = r.to_rows("summary"), r.to_rows("points")
+    assert list(summary[0]) == s.SCHEMA.names and list(points[0]) == s.POINTS_SCHEMA.names
+    assert summary[0]["mu_star_dem"] == pytest.approx(0.39375) and summary[0]["n_failed"] == 1
+    s.write_csv(tmp_path / "map.csv")
+    _, back = read_csv(tmp_path / "map.csv")
+    assert back[0]["dem_monotonic"] is True and back[0]["n_tilts"] == 2 and back[0]["span_m"] == summary[0]["span_m"]
+    assert points[1]["lambda"] is None and points[0]["joints"] == "L4:slide"
+    assert r.lines("m.h5") == [
+        "friction map (glued, mu_base 1, 2 friction values, 3 bisection rounds): 2 tilts, 1 failed, 12 s -> m.h5",
+        "id                        Sh    Sd  mu*DEM  bracket         mu*LP   mu*NA  mu*2bar  lambda_ns  status",
+        "Sh02-Sd020              0.20  0.20   0.394  [ 0.375, 0.412]  0.415     -     0.453    0.350  bracketed"]
+
+
+def test_run_of_a_spec_passes_every_field_to_the_map(monkeypatch):
+    import dataclasses
+    import inspect
+
+    names = list(inspect.signature(fm.catalogue_map).parameters)
+    got = {}
+    monkeypatch.setattr(fm, "catalogue_map", lambda *a, **kw: got.update(zip(names, a), **kw))
+    spec = fm.MapSpec(("Sh06-Sd015",), "free", "0.3,0.6", 0.9, refine=1, protocol={"tol": 0.05}, settings={"dt": 1e-4},
+                      n_voussoirs=6, time_scale=1.0, contact=0.8, law={"Sh06-Sd015": {}}, non_associative=False)
+    fm.run(spec, "x.h5", workers=1, resume=True)
+    assert set(got) <= set(names) and got["out_path"] == "x.h5" and got["workers"] == 1 and got["resume"] is True
+    assert all(got[f.name] == getattr(spec, f.name) for f in dataclasses.fields(spec))

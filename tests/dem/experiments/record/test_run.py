@@ -33,3 +33,38 @@ def test_a_strong_pulse_moves_the_mass_centroid_and_a_weak_one_does_not():
     weak, strong = runs
     assert weak.peak_d_star < 1e-4 and not weak.collapsed
     assert strong.collapsed or strong.peak_d_star > 2e-3
+
+
+def test_a_record_files_summary_is_its_schema_row():
+    """``run(RecordSpec)`` on the shipped record: its row (the JSON of ``archdem record``) in the schema's
+    columns, the PGA in g and m/s^2 alike, and the text's lines."""
+    from analytic.motions.records import example_record, read_record
+    from dem.experiments.record.run import RecordSpec, RecordSummary, run
+    from specimens.constants import G
+
+    path = example_record()
+    s = run(RecordSpec(str(path)))
+    m = read_record(path)
+    (row,) = s.to_json()
+    assert list(row) == RecordSummary.SCHEMA.names and row["npts"] == len(m.values) and row["format"] == "at2"
+    assert row["pga_g"] == pytest.approx(row["pga_ms2"] / G) and row["pga_ms2"] == pytest.approx(m.pga)
+    assert row["t_pga"] == pytest.approx(np.argmax(np.abs(m.values)) * m.dt)
+    lines = s.lines()
+    assert lines[0] == f"file      {path}" and lines[-1].startswith(f"PGA       {row['pga_g']:.4f} g = ")
+
+
+def test_a_record_threshold_row_scales_the_record_and_the_lambda():
+    from dem.experiments.record.run import RecordThreshold
+    from specimens.constants import G
+
+    (row,) = RecordThreshold.of("A", "r.AT2", (1.0, 4.5), 0.2 * G, 0.3, 0.6, "rocking", 9).rows()
+    assert list(row) == RecordThreshold.SCHEMA.names and row["window_s"] == "1.00-4.50"
+    assert (row["pga_record_g"], row["scale_factor"], row["ratio_to_static"]) == pytest.approx((0.2, 3.0, 2.0))
+    (none,) = RecordThreshold.of("A", "r.AT2", (1.0, 4.5), 0.2 * G, 0.3, None, None, 9).rows()
+    assert all(np.isnan(none[k]) for k in ("collapse_pga_g", "scale_factor", "ratio_to_static")) and none["mode"] == ""
+
+
+def test_a_record_runs_description_is_its_row():
+    (row,) = _run(0.02, collapsed=True).rows()
+    assert _run(0.02, collapsed=True).describe() == row == {
+        "record": "r", "scale": 1.0, "pga": 1.0, "collapsed": True, "mode": "", "peak_d_star": 0.02, "wall_s": 0.0}

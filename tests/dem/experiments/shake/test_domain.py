@@ -169,3 +169,45 @@ def test_four_bar_threshold_separates_survival_from_collapse(analytic, freq):
     a = min(p["amplitude_g"] for p in analytic["four-bar"].points() if p["x"] == freq) * G
     assert not simulate(mech, SinePulse(a * 0.995, freq), record=False).collapsed
     assert simulate(mech, SinePulse(a * 1.005, freq), record=False).collapsed
+
+
+def _threshold_summary(a, status="settled", lo=None, hi=None):
+    """A threshold's summary as the domain holds it, collapsing from ``a`` [g] (None: not up to the top)."""
+    readings = [{"check": c} for c in ("search", "search", "half step", "half step", "lmgc90")]
+    return {"freq": 4.0, "amplitude_g": a, "bracket_g": None if a is None else [0.9 * a, a], "mode": "rocking" if a else "",
+            "collapse_phase": None, "survival_bands_above": [{"from_g": 0.6, "to_g": 0.8}] if a else [], "n_sims": 12,
+            "verdict": {"status": status, "text": status, "range_g": [lo, hi], "readings": readings, "wall_s": 5.0}}
+
+
+def test_a_domain_threshold_row_sets_the_dem_beside_the_linkages(tmp_path):
+    """The shake step's row: NaN where a threshold is missing, the DEM / four-bar ratio, the checks' runs
+    (the search's own not counted), and a CSV read back typed through the declared schema."""
+    from dem.common.tables import read_csv
+    from dem.experiments.shake.domain import DomainThreshold
+
+    (row,) = DomainThreshold.of("A", 0.3, _threshold_summary(0.5, "range", 0.45, None), 0.4, None).rows()
+    assert list(row) == DomainThreshold.SCHEMA.names
+    assert row["ratio_dem_to_four_bar"] == pytest.approx(1.25) and math.isnan(row["a_two_bar_g"])
+    assert row["survival_bands_above"] == "0.600-0.800" and row["check_runs"] == 3
+    assert (row["range_low_g"], math.isnan(row["range_high_g"])) == (0.45, True)
+    (none,) = DomainThreshold.of("A", 0.3, _threshold_summary(None), None, 0.2).rows()
+    assert math.isnan(none["a_dem_g"]) and math.isnan(none["ratio_dem_to_four_bar"]) and none["dem_mode"] == ""
+    DomainThreshold(row).write_csv(tmp_path / "shake.csv")
+    _, (back,) = read_csv(tmp_path / "shake.csv")
+    assert back["n_sims"] == 12 and back["a_dem_g"] == 0.5 and back["verdict"] == "range"
+
+
+def test_the_dem_domain_text_and_json():
+    from dem.experiments.shake.domain import dem_domain_json, dem_domain_lines
+
+    t = _threshold_summary(0.5)
+    res = {"physics_engine": "mujoco", "dt": 1.25e-4, "config": "glued", "mu_joint": 0.577, "mu_base": 1.0,
+           "lambda": 0.3, "a_range_g": [0.3, 1.8], "thresholds": [t, {**t, "freq": 8.0, "amplitude_g": None,
+                                                                      "survival_bands_above": []}]}
+    assert dem_domain_lines("A", res) == ["A  DEM (mujoco, dt 0.000125 s, glued, mu 0.577/1)  static lambda 0.3000",
+                                          "       4 Hz: collapse from 0.5000 g; survives again 0.600-0.800 g",
+                                          "       8 Hz: collapse from none up to 1.800 g"]
+    assert dem_domain_lines("A", {**res, "plot": "d.png"})[-1] == "figure: d.png"
+    js = dem_domain_json(res)
+    assert js["thresholds"][0] == {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")}
+    assert {k: v for k, v in js.items() if k != "thresholds"} == {k: v for k, v in res.items() if k != "thresholds"}

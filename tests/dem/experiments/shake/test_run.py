@@ -245,3 +245,33 @@ def test_progress_reports_simulated_seconds_and_the_end():
     assert [c[0] for c in calls] == sorted(c[0] for c in calls)
     plain = shake(block, pulse)
     assert (plain.collapsed, plain.t_collapse, plain.sim.steps) == (r.collapsed, r.t_collapse, r.sim.steps)
+
+
+def test_the_spec_runs_as_shake_and_its_summary_is_its_schema_row(block, tmp_path):
+    """``run(ShakeSpec)`` is ``shake`` with the spec's fields; the summary (the JSON of ``archdem shake``) is
+    the result's one row, in its schema's columns, and the CSV of that row reads back to it."""
+    from dem.common.tables import read_csv
+    from dem.experiments.shake.run import ShakeResult, ShakeSpec, run
+
+    proto = ShakeProtocol(tail=0.0, duration=0.1)
+    a = run(ShakeSpec(block, SinePulse(0.5 * G, 4.0), SETTINGS, proto, label="b"))
+    b = shake(block, SinePulse(0.5 * G, 4.0), SETTINGS, proto, label="b")
+    sa, sb = a.summary(), b.summary()
+    assert list(sa) == ShakeResult.SCHEMA.names
+    assert {k: v for k, v in sa.items() if k != "wall_s"} == {k: v for k, v in sb.items() if k != "wall_s"}
+    assert sa["id"] == "b" and sa["steps"] == b.sim.steps and isinstance(sa["steps"], int)
+    a.write_csv(tmp_path / "run.csv")
+    _, (row,) = read_csv(tmp_path / "run.csv")
+    assert row["peak_crown_mm"] == sa["peak_crown_mm"] and row["joints"] == sa["joints"]
+    assert row["collapsed"] is sa["collapsed"]
+
+
+def test_the_text_of_a_run_says_survival_or_collapse_and_where_the_file_is(block):
+    from dem.experiments.shake.run import ShakeSpec, run
+
+    res = run(ShakeSpec(block, SinePulse(0.2 * G, 4.0), SETTINGS, ShakeProtocol(tail=0.0, duration=0.1), label="b"))
+    res.result_file = "runs/x.h5"
+    text = res.text()
+    assert text.startswith("b (") and f"mu {NO_SLIDING_MU:g}/{NO_SLIDING_MU:g}), PGA 0.200 g: survival, none; crown " \
+        f"peak {res.peak_crown_mm:.2f} mm, residual {res.residual_crown_mm:.2f} mm; " in text
+    assert text.endswith(" -> runs/x.h5")

@@ -98,9 +98,10 @@ def test_shake_record(tmp_path, capsys, monkeypatch):
 
 def test_threshold_json(tmp_path, capsys):
     rc = main(["threshold", *SMALL, "--sine", "5", "--json", "--a-max", "3", "--scan-ratio", "1.4",
-               "--tol", "0.05", "--workers", "1", "--tail", "0.5"])
+               "--tol", "0.05", "--workers", "1", "--tail", "0.5", "--no-check"])
     assert rc == 0
     d = json.loads(capsys.readouterr().out)
+    assert d["verdict"]["text"] == "unchecked (not checked)"  # --no-check: the search alone
     assert d["lambda"] == pytest.approx(_lp_lambda(), rel=1e-12)  # the static onset: the LP of the same blocks
     assert d["amplitude_g"] is not None, "no collapse found up to 3 g"
     lo, hi = d["bracket_g"]

@@ -6,10 +6,10 @@ import pytest
 
 from analytic.motions.inputs import SinePulse
 from dem.core.model import single_block
-from dem.core.settings import Settings
+from dem.core.settings import Settings, dynamics_settings
 from dem.experiments.shake import thresholds
 from dem.experiments.shake.run import ShakeProtocol
-from dem.experiments.shake.thresholds import Outcome, _bands, scan_grid, threshold
+from dem.experiments.shake.thresholds import CHECK_MARGIN, Outcome, _bands, scan_grid, threshold
 from specimens.constants import NO_SLIDING_MU, G
 
 
@@ -202,3 +202,183 @@ def test_failure_domain_reports_each_frequency(monkeypatch):
     assert calls[0] == (0, 2, "2 frequencies")
     assert calls[1][:2] == (1, 2) and calls[1][2].startswith("1 Hz: 0.45")
     assert calls[2] == (2, 2, "4 Hz: no collapse")
+
+
+# ------------------------------------------------------------------- settled or a range
+def _checked(monkeypatch, freq: float, truths: dict, mu: float = 0.577, unavailable: str = "", check=True):
+    """A search whose runs collapse from ``truths["search"]`` [g] (None: never), and its check, whose
+    half-step and LMGC90 runs collapse from their own truths: stand-ins for the simulator."""
+    from dem.experiments.shake.thresholds import Reading
+
+    def hit(name, a):
+        t = truths[name]
+        return t is not None and a >= t
+
+    monkeypatch.setattr(thresholds, "_run_one", lambda args: Outcome(float(args[4]), hit("search", args[4]),
+                                                                     "sliding", None))
+    monkeypatch.setattr(thresholds, "_read_one", lambda args: Reading(args[0], args[2].engine, args[2].dt, float(args[5]),
+                                                                      hit(args[0], args[5]), "sliding", ("R8",)))
+    monkeypatch.setattr(thresholds, "reference_unavailable", lambda model, st: unavailable)
+    st = Settings(engine="mujoco", dt=1.25e-4, mu_joint=mu, mu_base=mu)
+    return threshold(single_block(0.1, 0.4), freq, st, a_min_g=0.3, a_max_g=1.5, scan_ratio=1.1, tol=0.01, workers=1,
+                     check=check)
+
+
+def test_a_bracket_every_check_reads_alike_is_settled(monkeypatch):
+    r = _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": 0.5})
+    v = r.verdict
+    assert v.status == "settled" and v.checks == ("half step", "lmgc90")
+    # the bracket's two ends, once per check, and nothing else: no new search
+    lo, hi = r.bracket_g
+    assert sorted((x.check, x.amplitude_g) for x in v.readings if x.check != "search") == sorted(
+        (c, a) for c in ("half step", "lmgc90") for a in (lo / CHECK_MARGIN, hi * CHECK_MARGIN))
+    lm = [x for x in v.readings if x.check == "lmgc90"]
+    assert {(x.engine, x.dt) for x in lm} == {("lmgc90", Settings().dt)}  # the reference at its own step
+    assert {x.dt for x in v.readings if x.check == "half step"} == {0.5 * 1.25e-4}
+    assert r.summary()["verdict"]["status"] == "settled"
+
+
+def test_readings_within_the_margin_settle_and_beyond_it_do_not(monkeypatch):
+    # the engines' scatter where they agree (a few %) is not a range; a difference of 8 % is
+    assert _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.49, "lmgc90": 0.515}).verdict.status == "settled"
+    assert _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": 0.54}).verdict.status == "range"
+
+
+def test_outside_the_split_band_only_the_half_step_checks(monkeypatch):
+    for freq, mu in ((4.0, 0.577), (10.0, 0.577), (6.0, NO_SLIDING_MU)):
+        v = _checked(monkeypatch, freq, {"search": 0.5, "half step": 0.5, "lmgc90": None}, mu=mu).verdict
+        assert v.status == "settled" and v.checks == ("half step",), (freq, mu)
+
+
+def test_the_reference_standing_at_the_first_collapse_makes_a_range_that_holds_its_threshold(monkeypatch):
+    r = _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": 0.8})
+    v = r.verdict
+    assert v.status == "range" and "lmgc90 stands" in v.why
+    assert v.low_g == r.amplitude_g and 0.8 <= v.high_g <= 0.8 * 1.1  # LMGC90's own, to one scan step
+    assert all(x.amplitude_g <= v.high_g for x in v.readings if x.check == "lmgc90")  # the walk stopped there
+    assert v.text().startswith("range 0.5")
+
+
+def test_a_reference_that_stands_to_the_top_leaves_the_range_open(monkeypatch):
+    v = _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": None}).verdict
+    assert v.status == "range" and v.high_g is None and "none up to 1.500" in v.text()
+
+
+def test_a_half_step_collapsing_below_the_bracket_lowers_the_range(monkeypatch):
+    r = _checked(monkeypatch, 2.0, {"search": 0.5, "half step": 0.4, "lmgc90": None})
+    v = r.verdict
+    assert v.status == "range" and v.high_g == r.amplitude_g and 0.4 <= v.low_g <= 0.4 * 1.1
+    assert "half step collapses" in v.why
+
+
+def test_without_the_reference_never_settled(monkeypatch):
+    v = _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": 0.5},
+                 unavailable="LMGC90 is not installed").verdict
+    assert v.status == "unchecked" and v.text() == "unchecked (LMGC90 is not installed)"
+    assert v.checks == ("half step",)
+
+
+def test_a_reference_that_fails_leaves_the_threshold_unchecked(monkeypatch):
+    r = _checked(monkeypatch, 6.0, {"search": 0.5, "half step": 0.5, "lmgc90": 0.5})
+    read = thresholds._read_one
+
+    def dies(args):
+        if args[0] == "lmgc90":
+            raise RuntimeError("the LMGC90 worker process ended (exit code -9); its messages are above")
+        return read(args)
+
+    monkeypatch.setattr(thresholds, "_read_one", dies)
+    v = thresholds.check_threshold(r, single_block(0.1, 0.4), Settings(engine="mujoco", dt=1.25e-4), workers=1)
+    assert v.status == "unchecked" and v.why.startswith("LMGC90 failed: the LMGC90 worker") and v.checks == ("half step",)
+
+
+def test_the_half_step_check_alone_leaves_the_split_band_unchecked(monkeypatch):
+    truths = {"search": 0.5, "half step": 0.5, "lmgc90": None}
+    v = _checked(monkeypatch, 6.0, truths, check="half-step").verdict
+    assert v.status == "unchecked" and v.why == "LMGC90 not asked" and v.checks == ("half step",)
+    assert _checked(monkeypatch, 2.0, truths, check="half-step").verdict.status == "settled"
+
+
+def test_a_search_without_collapse_is_checked_at_the_top(monkeypatch):
+    v = _checked(monkeypatch, 6.0, {"search": None, "half step": None, "lmgc90": 1.2}).verdict
+    assert v.status == "range" and v.high_g is None and 1.2 <= v.low_g <= 1.2 * 1.1
+
+
+def test_unchecked_by_default(monkeypatch):
+    monkeypatch.setattr(thresholds, "_run_one", lambda args: Outcome(float(args[4]), args[4] >= 0.5, "rocking", None))
+    r = threshold(single_block(0.1, 0.4), 6.0, a_min_g=0.3, a_max_g=1.5, scan_ratio=1.1, workers=1)
+    assert r.verdict is None and r.summary()["verdict"]["text"] == "unchecked (not checked)"
+
+
+def test_the_reference_says_what_it_cannot_run():
+    from dem.core.engines import engine_installed
+
+    why = thresholds.reference_unavailable(single_block(0.1, 0.4), Settings(planar=True))
+    assert why and "settled" not in why
+    if engine_installed("lmgc90"):
+        assert "planar" in why
+        assert thresholds.reference_unavailable(single_block(0.1, 0.4), Settings()) == ""
+
+
+@pytest.mark.slow
+def test_lmgc90_arbitrates_the_sliding_collapse_of_sh06_sd015_at_6_hz():
+    """The case where the engines split (free crown, friction 0.577 on every joint and the base, 6 Hz):
+    MuJoCo's search collapses from 0.840 g by sliding at the crown and the base, LMGC90 stands there
+    (its crown moves some 40 mm, then rests). The check of that bracket is a range, never settled,
+    whose top is open: LMGC90 stands at the bracket's upper end. The scan's top is put at that end so
+    that no walk follows (about a minute)."""
+    from dem.core.engines import engine_installed
+    from dem.core.model import as_model
+    from dem.experiments.shake.thresholds import ThresholdResult, check_threshold
+
+    if not engine_installed("lmgc90"):
+        pytest.skip("LMGC90 is not installed")
+    model = as_model("Sh06-Sd015", config="free")
+    st = dynamics_settings(mu_joint=0.577, mu_base=0.577)
+    res = ThresholdResult(6.0, 0.8399, (0.8329, 0.8399), (), (), 1.15, 0.01, 0.0, "sliding",
+                          a_range_g=(0.6, 0.8399 * CHECK_MARGIN))
+    v = check_threshold(res, model, st, workers=2)
+    lm = [r for r in v.readings if r.check == "lmgc90"]
+    assert [r.collapsed for r in lm] == [False, False] and all("R8" in r.joints for r in lm)  # slides, stands
+    assert v.status == "range" and v.low_g == pytest.approx(0.8399) and v.high_g is None
+    assert "lmgc90 stands" in v.why
+
+
+def test_the_spec_runs_as_threshold_and_its_summary_is_its_schema_row(monkeypatch, tmp_path):
+    """``run(ThresholdSpec)`` is ``threshold`` with the spec's fields (a stand-in collapsing from 0.45 g); its
+    summary (the JSON of ``archdem threshold`` after the arch's fields) is its one row plus ``extra``, and the
+    CSV of that row reads back typed."""
+    from dem.common.tables import read_csv
+    from dem.experiments.shake.thresholds import ThresholdResult, ThresholdSpec, run
+
+    monkeypatch.setattr(thresholds, "_run_one", lambda args: Outcome(float(args[4]), args[4] >= 0.45, "rocking", None))
+    kw = dict(a_min_g=0.3, a_max_g=0.6, scan_ratio=1.15, tol=0.01)
+    a = run(ThresholdSpec(single_block(0.1, 0.4), 4.0, **kw), workers=1)
+    b = threshold(single_block(0.1, 0.4), 4.0, workers=1, **kw)
+    assert (a.amplitude_g, a.bracket_g, a.runs) == (b.amplitude_g, b.bracket_g, b.runs)
+    s = a.summary()
+    assert list(s) == ThresholdResult.SCHEMA.names and s["verdict"]["status"] == "unchecked"
+    assert s["n_sims"] == a.n_sims and s["bracket_g"] == list(a.bracket_g)
+    a.write_csv(tmp_path / "t.csv")
+    _, (row,) = read_csv(tmp_path / "t.csv")
+    assert row["amplitude_g"] == a.amplitude_g and row["runs"] == s["runs"] and row["mode"] == "rocking"
+
+
+def test_the_text_of_a_threshold_names_it_its_bracket_and_the_bands_above():
+    from dem.experiments.shake.thresholds import Reading, ThresholdResult, Verdict
+
+    bands = ({"from_g": 0.3, "to_g": 0.4, "collapse": False}, {"from_g": 0.45, "to_g": 0.6, "collapse": True},
+             {"from_g": 0.7, "to_g": 0.8, "collapse": False}, {"from_g": 0.9, "to_g": 1.0, "collapse": True})
+    v = Verdict("settled", checks=("half step",), wall_s=2.0, readings=(
+        Reading("search", "mujoco", 1.25e-4, 0.44, False, "none"),
+        Reading("half step", "mujoco", 6.25e-5, 0.47, True, "rocking", ("L1", "R1"))))
+    r = ThresholdResult(4.0, 0.45, (0.44, 0.45), bands, (), 1.15, 0.01, 3.0, "rocking", "before-first-rebound",
+                        a_range_g=(0.3, 1.0), verdict=v)
+    first, verdict, search, half = r.text("A", 0.31).splitlines()
+    assert first == ("A 4 Hz: least collapsing amplitude 0.4500 g (bracket 0.4400-0.4500, rocking, before-first-rebound); "
+                     "static lambda 0.3100; survives again 0.700-0.800 g; 0 runs, 3.0 s")
+    assert verdict == "  settled (half step; within 5%); 1 check runs, 2.0 s"
+    assert search.split() == ["search", "mujoco", "dt", "0.125", "ms", "0.4400", "g", "stands", "none"]
+    assert half.endswith("collapsed rocking (slid: L1 R1)")
+    none = ThresholdResult(4.0, None, None, bands[:1], (), 1.15, 0.01, 1.0, a_range_g=(0.3, 1.0))
+    assert none.text("A", 0.31) == "A 4 Hz: no collapse up to 1.000 g (0 runs, 1.0 s)"

@@ -28,6 +28,13 @@ def test_summary_is_the_sample_statistics_of_the_runs():
     assert math.isnan(one.lambda_sd) and one.lambda_mean == 0.3
 
 
+def test_the_ensemble_prints_itself():
+    r = EnsembleResult("x", 0.84, 0.0012, np.array([0.30, 0.33, 0.36]), ("rocking", "rocking", "mixed"),
+                       ((1, 0), (1, 1), (1, 2)), ("realisation 3: boom",), "e.h5", 12.3, config="glued", seed=1)
+    assert r.lines() == ["x (glued, contact 0.840, edge-loss scatter 1.2 mm, seed 1): lambda 0.3300 +- 0.0300 over 3 "
+                         "realisations (rocking 2, mixed 1); 12 s -> e.h5", "  failed: realisation 3: boom"]
+
+
 def band_case(case: dict) -> dict:
     """Stand-in case function (imported by name in the workers): its lambda is the intrados end of
     joint L0's band plus the realisation, so the test sees which bands each case carried."""

@@ -163,3 +163,25 @@ def test_result_written_before_the_rest_rule_loads_as_held_the_full_time(tmp_pat
     assert r.protocol.probe_ends == "first" != result.protocol.probe_ends
     new = load_result(save_result(result, tmp_path / "new.h5")).protocol
     assert (new.guess_bracket, new.probe_ends) == (result.protocol.guess_bracket, result.protocol.probe_ends)
+
+
+def test_result_written_before_the_engine_options_loads_them_from_its_flat_keys(tmp_path, result):
+    # such a file's settings hold PyBullet's options as keys of their own; the engine's options are
+    # stored with the settings and with the versions of every result since
+    import json
+
+    import h5py
+
+    from dem.core.engines.options import LEGACY_KEYS, PyBulletOptions
+
+    assert result.versions["pybullet_options"] == result.settings.engine_options.to_dict() == PyBulletOptions().to_dict()
+    p = save_result(result, tmp_path / "old.h5")
+    with h5py.File(p, "r+") as f:
+        d = json.loads(f.attrs["settings"])
+        assert d.pop("engine_options") == PyBulletOptions().to_dict()
+        d |= {**PyBulletOptions().to_dict(), "solver_iterations": 150, "friction_erp": 0.9}
+        f.attrs["settings"] = json.dumps(d)
+    s = load_result(p).settings
+    assert set(LEGACY_KEYS) <= set(d)
+    assert s.engine_options == PyBulletOptions(solver_iterations=150, friction_erp=0.9)
+    assert s.with_(engine_options=None) == result.settings

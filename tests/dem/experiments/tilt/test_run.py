@@ -361,3 +361,46 @@ def test_progress_of_a_real_tilt_reports_simulated_time():
     assert calls[0] == (0, None, "static LP of the blocks (first estimate)")
     assert any(" s; bracket" in note for _, _, note in calls)  # within a level: its simulated time
     assert [d for d, _, _ in calls] == sorted(d for d, _, _ in calls) and calls[-1][0] == r.n_sims
+
+
+# ------------------------------------------------------------------------ spec, run and the result's table
+def _faked_result(monkeypatch, **spec):
+    """A tilt of Sh06-Sd015 through run(TiltSpec) with faked held levels (collapse above 0.29): the
+    bracketing only, and the result as the command sees it."""
+    from types import SimpleNamespace
+
+    import dem.experiments.tilt.run as pr
+    from dem.core.model import from_assembly
+    from specimens.blocks import discretise
+    from specimens.catalogue import get_specimen
+
+    monkeypatch.setattr(pr, "hold_level", lambda model, settings, proto, lam:
+                        SimpleNamespace(collapsed=lam > 0.29, mode="rocking", joints=[], out_of_plane={},
+                                        history=SimpleNamespace(friction_work=1e-3)))
+    asm = discretise(get_specimen("Sh06-Sd015").arch, config="glued")
+    return pr, asm, pr.run(pr.TiltSpec(from_assembly(asm, name="Sh06-Sd015"), assembly=asm, label="Sh06-Sd015", **spec))
+
+
+def test_run_of_a_spec_is_the_tilt_call(monkeypatch):
+    pr, asm, res = _faked_result(monkeypatch, protocol=TiltProtocol(tol=0.005))
+    old = tilt(asm, Settings(), TiltProtocol(tol=0.005), label="Sh06-Sd015")
+    assert (res.lam, res.bracket, res.levels, res.protocol) == (old.lam, old.bracket, old.levels, old.protocol)
+    with pytest.raises(Exception):  # a spec is frozen
+        pr.TiltSpec("Sh06-Sd015").label = "x"
+
+
+def test_the_result_declares_its_row_once(monkeypatch, tmp_path):
+    # the JSON answer is the schema's one row, in its order; the CSV reads back typed; the printed lines
+    from dem.common.tables import read_csv
+
+    _, _, res = _faked_result(monkeypatch)
+    s = res.summary()
+    assert list(s) == res.SCHEMA.names and s["lambda"] == res.lam and s["n_sims"] == res.n_sims
+    assert s["lp_check"]["agrees"] in (True, False) and s["joints"] == []
+    res.write_csv(tmp_path / "tilt.csv")
+    _, rows = read_csv(tmp_path / "tilt.csv")
+    assert rows[0]["lambda"] == res.lam and rows[0]["bracket"] == list(res.bracket) and rows[0]["planar"] is False
+    lines = res.lines()
+    assert lines[0].startswith(f"Sh06-Sd015 (glued, mu 0.577/1, hold): lambda = {res.lam:.4f} (theta = ")
+    assert f"{res.n_sims} simulations" in lines[0] and lines[-1].startswith("  limit analysis of the same blocks: lambda = ")
+    assert len(lines) == 2  # the catalogue's scale: no line on a slowed protocol

@@ -53,3 +53,13 @@ def test_the_study_is_in_the_report(piers):
     assert f"within {max(abs(float(r['err_dem_vs_lp_pct'])) for r in rows):.1f} % of the LP" in rec["findings"][1]
     assert "[piers]" in (out / "report.html").read_text(encoding="utf-8")
     assert not math.isnan(manifest["steps"]["piers"]["wall_s"])
+
+
+def test_the_table_reads_back_in_its_declared_kinds(piers):
+    from dem.common.tables import read_csv
+    from dem.experiments.tilt.step_piers import PierTilt
+
+    out, _, rows = piers
+    schema, typed = read_csv(out / "piers" / "piers.csv")
+    assert schema == PierTilt.SCHEMA and len(typed) == len(rows)
+    assert all(isinstance(r["hinges_in_piers"], int) and isinstance(r["hinges_lp"], str) for r in typed)
