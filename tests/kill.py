@@ -80,7 +80,9 @@ def stop_at(args: list[str], sig: int, ready: Callable[[], bool], delay: float =
     its workers at the signal."""
     log = log or Path(os.devnull)
     with open(log, "w") as err:
-        p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=err, start_new_session=group)
+        # stdin from /dev/null: under pytest-xdist it is otherwise the worker's pipe, which no user's run has
+        p = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err,
+                             start_new_session=group)
         try:
             t0 = time.monotonic()
             while not ready():
