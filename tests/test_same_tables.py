@@ -58,3 +58,13 @@ def test_a_missing_table_is_exit_2(same_tables, tmp_path, capsys):
     a = _run(tmp_path / "a", POINTS)
     assert same_tables.main([str(a), str(tmp_path / "none"), "map/map_points.csv"]) == 2
     assert "cannot read map/map_points.csv" in capsys.readouterr().err
+
+
+def test_every_wall_time_column_is_left_out(same_tables, tmp_path):
+    """The campaign's wall-time columns (a run's, the threshold checks', the solve without dilatancy's) differ
+    from one machine to the next: they are no result to compare."""
+    header = "id,a_dem_g,wall_s,check_wall_s,seconds_na\n"
+    for name, row in (("a", "x,0.5,1.0,2.0,3.0\n"), ("b", "x,0.5,1.1,2.2,3.3\n")):
+        (tmp_path / name / "shake").mkdir(parents=True)
+        (tmp_path / name / "shake" / "shake.csv").write_text(header + row)
+    assert same_tables.differences(tmp_path / "a" / "shake" / "shake.csv", tmp_path / "b" / "shake" / "shake.csv") == []
