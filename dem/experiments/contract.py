@@ -41,8 +41,10 @@ class Result:
 
     SCHEMA: ClassVar[Schema]
 
-    def rows(self) -> list[dict]:  # pragma: no cover - abstract
-        raise NotImplementedError
+    def rows(self) -> list[dict]:
+        """One row: each column of the schema read from the attribute of its name (a result holding one
+        row as its fields); a result of several rows, or named otherwise, says how."""
+        return [{c.name: getattr(self, c.name) for c in self.SCHEMA.columns}]
 
     def write_csv(self, path: Path) -> None:
         """The rows as CSV, with the schema beside them (``NAME.schema.json``)."""

@@ -67,9 +67,6 @@ class SettleResult(Result):
     at_rest: bool  # by the tilt test's rest rule over the run's last window
     collapsed: bool
 
-    def rows(self) -> list[dict]:
-        return [{c.name: getattr(self, c.name) for c in self.SCHEMA.columns}]
-
 
 def run(spec: SettleSpec) -> SettleResult:
     """Leave ``spec``'s blocks under gravity for ``spec.duration`` [s]. At rest: the tilt test's rest rule

@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import math
 from collections import Counter
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar
 
@@ -64,9 +64,6 @@ class SpecimenLab(Result):
     def schema(cls, tested: bool) -> Schema:
         """The table's columns: with the comparison with the laboratory if a specimen of it was tested."""
         return cls.SCHEMA if tested else Schema(tuple(c for c in cls.SCHEMA.columns if c.name not in cls.TESTED_ONLY))
-
-    def rows(self) -> list[dict]:
-        return [{f.name: getattr(self, f.name) for f in fields(self)}]
 
 
 def lab_plan(ctx: CampaignContext) -> tuple[list, list, int]:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar
 
@@ -51,9 +51,6 @@ class PierTilt(Result):
     hinges_dem: str  # the DEM's hinged joints apart by spaces
     mode_dem: str
     hinges_in_piers: int  # the LP's hinges in the piers' joints
-
-    def rows(self) -> list[dict]:
-        return [{f.name: getattr(self, f.name) for f in fields(self)}]
 
 
 def piers_plan(ctx: CampaignContext) -> tuple:
