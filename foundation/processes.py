@@ -1,11 +1,14 @@
-"""Worker processes that end with the process that started them (the pools of every sweep), and
-the program's stop on SIGTERM, handled as Ctrl-C is (docs/decisions/010-input-rules.md#interruption)."""
+"""Worker processes that end with the process that started them (the pools of every sweep), the
+program's stop on SIGTERM, handled as Ctrl-C is (docs/decisions/010-input-rules.md#interruption), and
+a standard output whose reader went away."""
 from __future__ import annotations
 
 import contextlib
 import multiprocessing
 import os
+import select
 import signal
+import sys
 import threading
 import time
 from concurrent.futures import ProcessPoolExecutor
@@ -136,5 +139,19 @@ def worker_pool(workers: int, start: str | None = None) -> Iterator[ProcessPoolE
         raise
 
 
+def stdout_reader_gone() -> bool:
+    """Whether standard output is a pipe whose reader has closed it (``| head``); if so it is pointed at
+    the null device, so that the interpreter's flush at exit raises no second ``BrokenPipeError``."""
+    try:
+        poller = select.poll()
+        poller.register(sys.stdout.fileno(), select.POLLOUT)
+        gone = any(ev & select.POLLERR for _, ev in poller.poll(0))
+    except (OSError, ValueError, AttributeError):  # no file descriptor (e.g. captured output)
+        return False
+    if gone:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    return gone
+
+
 __all__ = ["die_with_parent", "pool_worker_init", "stop_pool", "worker_pool", "StoppablePool", "Terminated",
-           "stop_signals", "raise_if_stopped", "PARENT_POLL_S"]
+           "stop_signals", "raise_if_stopped", "stdout_reader_gone", "PARENT_POLL_S"]

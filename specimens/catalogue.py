@@ -105,6 +105,18 @@ def catalogue_rows() -> list[dict]:
 JSON_KEYS = ("id", "Ri", "Re", "e", "t", "Sh", "Sd", "span", "rise", "mass", "n_blocks")
 
 
+def catalogue_table(rows: list[dict]) -> list[str]:
+    """The lines of ``archdem specimens``: a header with the units, then one line per row of
+    :func:`catalogue_rows` (lengths in mm, mass in kg, bodies free/glued)."""
+    out = [f"{'id':<11} {'Ri':>6} {'Re':>6} {'e':>6} {'t':>6} {'Sh':>5} {'Sd':>5} {'span':>6} {'rise':>6} {'mass':>6} "
+           f"{'bodies':>11}",
+           f"{'':<11} {'[mm]':>6} {'[mm]':>6} {'[mm]':>6} {'[mm]':>6} {'':>5} {'':>5} {'[mm]':>6} {'[mm]':>6} {'[kg]':>6} "
+           f"{'free/glued':>11}"]
+    return out + [f"{r['id']:<11} {r['Ri']*1e3:6.0f} {r['Re']*1e3:6.0f} {r['e']*1e3:6.0f} {r['t']*1e3:6.0f} "
+                  f"{r['Sh']:5.2f} {r['Sd']:5.3f} {r['span']*1e3:6.0f} {r['rise']*1e3:6.1f} {r['mass']:6.3f} "
+                  f"{r['n_bodies_free']:>5}/{r['n_bodies_glued']:<5}" for r in rows]
+
+
 #: The reference study's DEM joints per specimen (its Table 5.1): normal stiffness k_N [Pa/m, read per
 #: unit joint area: docs/physics/modes.md#4-reading-the-studys-joint-table], the rotational-impact
 #: frequency omega_r [rad/s] and the stiffness-proportional Rayleigh coefficient beta_R [s] it used.

@@ -126,6 +126,16 @@ def drawing_figure(assembly: Assembly, title: str | None = None) -> Figure:
     return fig
 
 
+def drawing_title(label: str, assembly: Assembly, plane_depth: float | None = None) -> str:
+    """The title ``archdem draw`` gives: an arch's label and ratios Sh, Sd; a drawing's label and density,
+    and, where its blocks without a depth were drawn ``plane_depth`` [m] deep, that its masses are per metre."""
+    a = assembly.arch
+    if a is not None:
+        return f"{label}   Sh = {a.Sh:.2f}, Sd = {a.Sd:.2f}"
+    return f"{label}\ndensity {assembly.density:g} kg/m^3" + (
+        f", blocks without a depth {plane_depth:g} m deep (masses per metre)" if plane_depth is not None else "")
+
+
 def save_drawing(assembly: Assembly, path: str | Path, title: str | None = None) -> Path:
     """Draw ``assembly`` and save it atomically to ``path`` (format from the suffix)."""
 

@@ -30,6 +30,7 @@ from specimens.blocks import discretise
 from specimens.catalogue import CATALOGUE, SPECIMEN_WIDTH
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, to_json, writable_file
 from specimens.geometry import PointedArch
 from specimens.imperfection import Imperfection
 
@@ -187,6 +188,11 @@ class Calibration:
                                 "loo_rms_pct": self.fraction_loo_rms_pct},
                 "experiments": self.source}
 
+    def save(self, path: str | Path, replace: bool = False) -> None:
+        """Write the calibration to ``path`` at once (never half a file); an existing one only with ``replace``."""
+        with atomic_path(path, overwrite=replace) as tmp:
+            tmp.write_text(to_json(self.to_json(), indent=2))
+
     @classmethod
     def from_json(cls, d: dict) -> "Calibration":
         try:
@@ -232,6 +238,15 @@ def calibrate(tests: list[TiltTest], scatter: bool = True, source: str = "") -> 
     return Calibration(d, sd, rows, rms, f, rms_f, source)
 
 
+def calibration_target(path: str | Path, replace: bool = False) -> Path:
+    """``path`` checked before the fit: writable (nothing made, so a bad table leaves nothing behind) and,
+    unless ``replace``, holding no calibration yet."""
+    out = writable_file(path)
+    if out.exists() and not replace:
+        raise ArchdemInputError(f"{out} holds a calibration already; it is kept unless you give --replace")
+    return out
+
+
 def load_calibration(path: str | Path | None = None) -> Calibration:
     """The calibration at ``path``; by default the one ``archdem calibrate`` stored
     (``CALIBRATION_FILE``) or, if there is none, the one shipped with archdem
@@ -245,5 +260,5 @@ def load_calibration(path: str | Path | None = None) -> Calibration:
         raise ArchdemInputError(f"cannot read the calibration file {p}: {exc}") from None
 
 
-__all__ = ["TiltTest", "read_experiments", "calibrate", "Calibration", "load_calibration", "lp_lambda",
+__all__ = ["TiltTest", "read_experiments", "calibrate", "Calibration", "calibration_target", "load_calibration", "lp_lambda",
            "LAB_TILT_TESTS", "CALIBRATION_FILE", "SHIPPED_CALIBRATION"]

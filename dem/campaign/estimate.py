@@ -8,12 +8,19 @@ import time
 
 from dem.common.campaign import CampaignContext
 from dem.core.engines import get_engine
-from dem.core.model import from_assembly
+from dem.core.model import as_model, from_assembly
 from dem.core.settings import DYNAMICS_ENGINE, Settings
 from dem.experiments.friction_map.run import parse_mu_grid
 from dem.experiments.friction_map.step_map import map_plan
 from dem.experiments.record.step_record import record_plan
 from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.shake.thresholds import (
+    REFERENCE_ENGINE,
+    bisections,
+    reference_needed,
+    reference_unavailable,
+    scan_grid,
+)
 from dem.experiments.tilt.step_lab import lab_plan
 from dem.experiments.tilt.step_tilt import tilt_frictions
 from specimens.blocks import discretise
@@ -42,6 +49,10 @@ DYNAMICS_DT_COST = 2.05  # DYNAMICS_ENGINE's searches at DYNAMICS_DT over its ow
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25, "lmgc90": 2.85}  # lmgc90: 1.5 x PyBullet's, paired at rest
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
 DYNAMIC_STEPS = ("shake", "record", "fragility")  # the steps that run CampaignContext.dynamics_engine
+# The shake step's search per threshold (scan top over lambda, bisection tol) by quick, and its scan ratio:
+# a threshold's runs, the unit its checks' runs are counted in (docs/timings.md#3-the-campaigns-time-estimate)
+SHAKE_SEARCH = {True: (4.0, 0.02), False: (6.0, 0.01)}
+SHAKE_SCAN_RATIO = 1.15
 
 
 def machine_speed(engine: str = "pybullet", steps: int = 200, repeats: int = 3) -> float:
@@ -73,11 +84,12 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
     map_specs, mus, refine = map_plan(ctx)
     tested, predicted, n_real = lab_plan(ctx)
     shake_specs, freqs = shake_plan(ctx)
+    half_runs, ref_runs = shake_check_runs(ctx, shake_specs, freqs)
     units = {
         "tilt": (len(ctx.specimens) * len(tilt_frictions(ctx)), "tilt tests"),
         "lab": (len(tested) * n_real + len(predicted), "tilt tests of imperfect blocks"),
         "map": (len(map_specs) * (len(parse_mu_grid(mus)) + refine), "map tilt cases"),
-        "shake": (len(shake_specs) * len(freqs), "sine-pulse thresholds"),
+        "shake": (len(shake_specs) * len(freqs), f"sine-pulse thresholds and {half_runs + ref_runs} check runs"),
         "record": (len(record_plan(ctx)), "record thresholds"),
     }
     ref = REFERENCE_SPEED.get(ctx.engine)
@@ -90,4 +102,33 @@ def estimate(ctx: CampaignContext, steps: list[str], speed: float | None = None)
         # units (or, for thresholds, the simulations inside one unit) run in parallel on the cores
         unit = UNIT_CORE_S[(name, ctx.quick)] * ENGINE_COST.get(engine, 1.0) * dt_cost * scale
         out[name] = {"units": n, "what": what, "wall_s": n * unit / cores}
+        if name == "shake":
+            # a check run costs a search run, twice at half the step; LMGC90's at its own step and cost
+            per_run = UNIT_CORE_S[(name, ctx.quick)] * scale / shake_search_runs(ctx.quick)
+            check = (half_runs * 2 * unit / shake_search_runs(ctx.quick)
+                     + ref_runs * per_run * ENGINE_COST[REFERENCE_ENGINE]) / cores
+            out[name] |= {"check_runs": half_runs + ref_runs, "check_wall_s": check,
+                          "wall_s": out[name]["wall_s"] + check}
     return out
+
+
+def shake_search_runs(quick: bool) -> int:
+    """Runs of one threshold search of the shake step: its whole scan and the bisection of one scan step."""
+    top, tol = SHAKE_SEARCH[quick]
+    return len(scan_grid(1.0, top, SHAKE_SCAN_RATIO)) + bisections(SHAKE_SCAN_RATIO, tol)
+
+
+def shake_check_runs(ctx: CampaignContext, specs: list, freqs: tuple[float, ...]) -> tuple[int, int]:
+    """The runs of the shake step's settled-or-range checks when they agree (the walks of a range not
+    counted): two at half the step per threshold, and two on LMGC90 per threshold that asks it (the
+    full campaign only: the quick one runs the half-step check alone, as the step asks)."""
+    half = 2 * len(specs) * len(freqs)
+    if ctx.quick or ctx.dynamics_engine == REFERENCE_ENGINE:
+        return half, 0
+    ref = 0
+    for s in specs:
+        st = ctx.dynamics_of(s)
+        asked = [f for f in freqs if reference_needed(f, st)]
+        if asked and not reference_unavailable(as_model(s.arch, config=ctx.config, contact=ctx.contact_of(s)), st):
+            ref += 2 * len(asked)
+    return half, ref

@@ -1,16 +1,11 @@
 """The ``archdem`` command-line program.
 
-Each sub-command lives in a module named after it, beside its experiment (``dem/experiments/NAME/``)
-or here for the commands that are no experiment, and exposes ``register(subparsers)``; the module adds its parser and sets ``func`` (a
-callable taking the parsed namespace and returning an exit code).
-Bad input raises :class:`foundation.errors.ArchdemInputError`, which becomes one
-line on stderr and exit code 2.
+Its sub-commands, those that are no experiment then every experiment's as the registry lists them, each
+add their parser (``register``); bad input (:class:`foundation.errors.ArchdemInputError`) is one line, code 2.
 """
 from __future__ import annotations
 
 import argparse
-import os
-import select
 import sys
 from importlib.metadata import version
 
@@ -20,13 +15,12 @@ try:
     from dem.campaign import campaign_cmd
     from dem.cli import analytic_cmd, draw_cmd, mesh_cmd, rock_cmd, specimens_cmd
     from dem.common.options import common_rules, restore_study
-    from dem.experiments.contract import resolve
+    from dem.experiments.contract import given_options, resolve
     from dem.experiments.registry import commands as experiment_commands
     from foundation.errors import ArchdemInputError
-    from foundation.processes import stop_signals
+    from foundation.processes import stdout_reader_gone, stop_signals
 
-    # The sub-command modules, in the order they appear in ``archdem --help``: those that are no experiment,
-    # then each experiment's, as the registry lists them (docs/architecture.md#the-experiment-contract).
+    # in the order of ``archdem --help``
     _COMMANDS = [specimens_cmd, mesh_cmd, draw_cmd, analytic_cmd, rock_cmd, campaign_cmd,
                  *(resolve(m) for m in experiment_commands())]
 except KeyboardInterrupt:
@@ -35,9 +29,8 @@ except KeyboardInterrupt:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse that reports usage errors in one line with exit code 2, and takes no abbreviation: an
-    option a command does not have (``--engine`` beside ``--engines``, ``--e`` beside ``--experiments``)
-    is refused, not read as another one."""
+    """argparse with usage errors in one line (exit code 2) and no abbreviation: an option a command lacks
+    (``--engine`` beside ``--engines``) is refused, not read as another one."""
 
     def __init__(self, *args, **kwargs) -> None:
         super().__init__(*args, **{"allow_abbrev": False, **kwargs})
@@ -48,7 +41,6 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="archdem", description=__doc__.splitlines()[0])
-
     parser.add_argument("--version", action="version", version=f"archdem {version('archdem')}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     for command in _COMMANDS:
@@ -85,10 +77,8 @@ def main(argv: list[str] | None = None) -> int:
             print("archdem: interrupted", file=sys.stderr)
             return stop.exit_code if stop.signum else 130
         except BrokenPipeError:
-            if not _stdout_gone():
+            if not stdout_reader_gone():  # else the reader of our output went away (e.g. | head): no traceback
                 raise  # a pipe of our own (e.g. to a worker) broke: that is a failure, not a closed reader
-            # the reader of our output went away (e.g. | head): no traceback, and none at exit either
-            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
             return 1
         except Exception:
             if not stop.signum:
@@ -97,31 +87,3 @@ def main(argv: list[str] | None = None) -> int:
             print("archdem: interrupted", file=sys.stderr)
             return stop.exit_code
 
-
-def given_options(parser: argparse.ArgumentParser, argv: list[str], command: str) -> frozenset[str]:
-    """The destinations ``argv`` sets explicitly (a default given by hand counts): the command's
-    options parsed again with every default suppressed."""
-    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
-    saved = [(a, a.default) for a in sub._actions]
-    try:
-        for a, _ in saved:
-            a.default = argparse.SUPPRESS
-        ns, _ = sub.parse_known_args(argv[argv.index(command) + 1:])
-    finally:
-        for a, d in saved:
-            a.default = d
-    return frozenset(vars(ns)) - {"func"}
-
-
-def _stdout_gone() -> bool:
-    """Whether standard output is a pipe whose reader has closed it."""
-    try:
-        poller = select.poll()
-        poller.register(sys.stdout.fileno(), select.POLLOUT)
-        return any(ev & select.POLLERR for _, ev in poller.poll(0))
-    except (OSError, ValueError, AttributeError):  # no file descriptor (e.g. captured output)
-        return False
-
-
-if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())

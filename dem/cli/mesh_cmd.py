@@ -3,23 +3,17 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, arch_from_args, default_of, discretisation_kwargs, writable_dir
+from dem.common.options import add_options, arch_request, default_of, writable_dir
 from specimens.blocks import discretise
-
-
-def assembly_from_args(args: argparse.Namespace):
-    """``(label, assembly)`` of the arch options and ``--config``/``--shape``."""
-    label, arch = arch_from_args(args)
-    kw = discretisation_kwargs(args, arch)
-    asm = discretise(arch, config=args.config, shape=getattr(args, "shape", default_of(discretise, "shape")), **kw)
-    return label, asm
 
 
 def _mesh(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from specimens.mesh import export_meshes
 
-    label, asm = assembly_from_args(args)
+    req = arch_request(args)
+    label, arch = req.structure()
+    asm = discretise(arch, config=args.config, shape=args.shape, **req.discretise_kwargs(arch))
     out = writable_dir(args.out)
     files = export_meshes(asm, out, args.format)
     print(f"{label}: {len(files)} file(s) for {asm.n_bodies} bodies written to {out}")

@@ -9,11 +9,14 @@ catalogue specimen, :func:`dem.core.contact.study_joints`).
 """
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 from analytic.limit.calibration import load_calibration
 from dem.core.contact import study_joints
 from dem.core.settings import Settings
 from specimens.blocks import check_contact
 from foundation.errors import ArchdemInputError
+from foundation.fields import default_of
 from specimens.geometry import PointedArch
 from specimens.imperfection import Imperfection
 
@@ -46,6 +49,34 @@ def joint_law(value: dict | str | None, specimen_id: str | None = None) -> dict:
     law = dict(value)
     Settings(**law)  # the law's own checks and messages
     return law
+
+
+def joint_law_settings(law: str | None = None, kn: float | None = None, youngs: float | None = None,
+                       damping_beta: float | None = None, damping_xi: float | None = None, joints: str | None = None,
+                       specimen_id: str | None = None, engines: Iterable[str | None] = ()) -> dict:
+    """The contact-law fields of :class:`~dem.core.settings.Settings` ({} = rigid) of a law given by its
+    parts, as the commands take them: ``law`` (None: compliant if ``kn`` [Pa/m], ``youngs`` [Pa] or a
+    damping (``damping_beta`` [s], ``damping_xi``) is given, else the default law), or ``joints="table-5.1"``
+    alone (the joints of catalogue specimen ``specimen_id``). Compliant joints on an engine of ``engines``
+    that is MuJoCo need a damping. The law's checks and messages are ``Settings``'."""
+    given = {k: v for k, v in (("kn", kn), ("youngs", youngs), ("damping_beta", damping_beta),
+                                ("damping_xi", damping_xi)) if v is not None}
+    if joints == STUDY_JOINTS:
+        if given or law == "rigid":
+            raise ArchdemInputError(f"--joints {STUDY_JOINTS} sets the joints: give it without --contact-law rigid, "
+                                    "--kn or --damping-*")
+        out = joint_law(STUDY_JOINTS, specimen_id)
+    else:
+        if law is None:
+            law = "compliant" if given else default_of(Settings, "contact_law")
+        out = {"contact_law": law, **given}
+        Settings(**out)  # the law's own checks and messages
+        out = {} if law == "rigid" else out
+    if out and "mujoco" in tuple(engines) and not (out.get("damping_beta") or out.get("damping_xi")):
+        raise ArchdemInputError("compliant joints on MuJoCo (--engine mujoco, the shakes' default) need --damping-beta or "
+                                "--damping-xi: undamped, the blocks keep bouncing on their springs and the joints slip "
+                                "(docs/engines.md#10-compliant-joints)")
+    return out
 
 
 def joint_law_text(value: dict | str | None) -> str:

@@ -1,181 +1,51 @@
 """What the sub-commands share: the option table (every shared option declared once, with where it
-applies), arch selection, JSON output, output paths."""
+applies), the arch options as a :class:`~dem.common.request.ArchRequest`, JSON output, output paths."""
 from __future__ import annotations
 
 import argparse
 import dataclasses
-import inspect
 import json
 import math
-import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from analytic.compliant.modes import KS_OVER_KN
 from analytic.motions.records import UNIT_FACTORS
-from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, contact_fraction, joint_law
+from dem.common.figures import figure_file  # noqa: F401 (the CLI modules import it from here)
+from dem.common.joints import CALIBRATED, JOINT_SETS, STUDY_JOINTS, joint_law_settings
+from dem.common.request import ArchRequest
 from dem.core.engines import available_engines
 from dem.core.engines.options import PyBulletOptions
-from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, MAX_DAMPING_XI, Settings
-from specimens.blocks import DEFAULT_DENSITY, DEFAULT_VOUSSOIRS, check_contact, discretise
-from specimens.catalogue import SPECIMEN_WIDTH, get_specimen
-from specimens.constants import DRAWN_DENSITY, MAX_LENGTH_M, MIN_LENGTH_M  # lengths an option takes [m]
-from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT
-from specimens.drawn import DRAWN_CONFIG, MAX_BLOCKS, DrawnAssembly, gaps_text
+from dem.core.settings import CONTACT_LAWS, DYNAMICS_DT, DYNAMICS_ENGINE, Settings
+from dem.studies.files import resumed_study
 from foundation.errors import ArchdemInputError
-from specimens.exchange import UNITS, read_assembly
-from specimens.geometry import PointedArch
-from foundation.io import can_make_dir, check_name, json_default, unique_run_path, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
-from foundation.io import parse_grid as _parse_grid
-from specimens.piers import MAX_COURSES, Piers
+from foundation.fields import default_of, option_help  # noqa: F401 (the CLI modules import default_of from here)
+from foundation.io import can_make_dir, json_default, writable_dir, writable_file  # noqa: F401 (the CLI modules import them from here)
+from specimens.blocks import check_contact, discretise
+from specimens.constants import MAX_LENGTH_M, MIN_LENGTH_M  # lengths an option takes [m]
+from specimens.drawn import DRAWN_CONFIG
+from specimens.exchange import UNITS
 
 #: The units of a record's numbers (archdem shake --record --units).
 RECORD_UNITS = tuple(UNIT_FACTORS)
-#: Densities the commands take [kg/m^3].
-DENSITY_RANGE = (1.0, 1e5)
 
 
-def default_of(obj: Any, name: str) -> Any:
-    """The library's default of ``name``: a field of dataclass ``obj`` or a parameter of function ``obj``.
-
-    The sub-commands take their defaults (and the values their help texts show) from here, so a
-    default is declared once, in the library. Raises ``LookupError`` if ``obj`` has no such default."""
-    if dataclasses.is_dataclass(obj):
-        for f in dataclasses.fields(obj):
-            if f.name == name:
-                if f.default is not dataclasses.MISSING:
-                    return f.default
-                if f.default_factory is not dataclasses.MISSING:
-                    return f.default_factory()
-                break
-        raise LookupError(f"{getattr(obj, '__name__', obj)} has no default for {name!r}")
-    par = inspect.signature(obj).parameters.get(name)
-    if par is None or par.default is inspect.Parameter.empty:
-        raise LookupError(f"{getattr(obj, '__name__', obj)}() has no default for {name!r}")
-    return par.default
-
-
-#: The depth [m] `archdem draw` gives blocks that state none (a plane drawing: masses per metre of depth).
-PLANE_DEPTH_M = 1.0
-
-
-def geometry_from_args(args: argparse.Namespace, plane: bool = False):
-    """``(label, DrawnAssembly)`` of ``--geometry`` (the arch and pier options refused beside it, and
-    ``--config``: a drawing's bodies are as drawn, so the command's configuration becomes
-    :data:`~specimens.drawn.DRAWN_CONFIG` in its output and file names). ``plane``: the command draws the
-    blocks in their plane, so a block without a depth takes :data:`PLANE_DEPTH_M`."""
-    given_arch = [f"--{k.replace('_', '-')}" for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc", "width", "voussoirs")
-                  + PIER_OPTIONS if getattr(args, k, None) is not None]
-    if getattr(args, "id", None) is not None or given_arch:
-        drop = "the specimen id" if getattr(args, "id", None) is not None else given_arch[0]
-        raise ArchdemInputError(f"--geometry gives the whole structure: drop {drop}")
-    option_used(args, "config", False, "a drawing's blocks are as drawn, with no glued or free crown")
-    if hasattr(args, "config"):
-        args.config = DRAWN_CONFIG
-    if args.depth is not None and not (math.isfinite(args.depth) and MIN_LENGTH_M <= args.depth <= MAX_LENGTH_M):
-        raise ArchdemInputError(f"--depth must be a length between {MIN_LENGTH_M:g} and {MAX_LENGTH_M:g} m, got {args.depth:g}")
-    units = args.units if args.units in UNITS else None  # otherwise a record's units (shake)
-    density = check_density(args.density) if getattr(args, "density", None) is not None else None
-    depth = PLANE_DEPTH_M if plane and args.depth is None else args.depth
-    return Path(args.geometry).stem, read_assembly(args.geometry, units=units, depth=depth, density=density)
-
-
-def density_text(asm: DrawnAssembly) -> str:
-    """``density 2000 kg/m^3 (archdem's default for drawings)``: a drawing's density and where it came from."""
-    why = {"given": "--density", "file": "stated by the file"}.get(asm.source.get("density_from"),
-                                                                   "archdem's default for drawings; --density sets it")
-    return f"density {asm.density:g} kg/m^3 ({why})"
-
-
-def arch_from_args(args: argparse.Namespace):
-    """Return ``(label, PointedArch)`` from the id or the parameter options; the label names the
-    piers too when the ``--pier-*`` options set them. With ``--geometry``: ``(label, DrawnAssembly)``,
-    which :func:`specimens.blocks.discretise` returns as drawn."""
-    if getattr(args, "geometry", None) is not None:
-        return geometry_from_args(args)
-    label, arch = _arch_from_args(args)
-    piers = piers_from_args(args)
-    if piers is None:
-        return label, arch
-    return (f"{label}-piers-H{piers.height:g}-B{piers.width:g}" + (f"-N{piers.courses}" if piers.courses > 1 else "")
-            + (f"-P{piers.load / 1e3:g}kN" if piers.load else "")), arch
-
-
-def _arch_from_args(args: argparse.Namespace):
-    for name in ("Ri", "Re", "e", "Rc", "width"):
-        v = getattr(args, name, None)
-        lo = 0.0 if name == "e" else MIN_LENGTH_M
-        if v is not None and not (math.isfinite(v) and lo <= v <= MAX_LENGTH_M):
-            raise ArchdemInputError(f"--{name} must be a length between {lo:g} and {MAX_LENGTH_M:g} m, got {v:g}")
-    width = args.width if args.width is not None else SPECIMEN_WIDTH
-    by_radii = [args.Ri, args.Re, args.e]
-    by_ratio = [args.Sh, args.Sd, args.Rc]
-    if args.id is not None:
-        if any(v is not None for v in by_radii + by_ratio):
-            raise ArchdemInputError("give either a specimen id or --Ri/--Re/--e or --Sh/--Sd/--Rc, not both")
-        spec = get_specimen(args.id)
-        arch = spec.arch if args.width is None else spec.arch.with_width(width)
-        return spec.id, arch
-    if all(v is not None for v in by_radii) and all(v is None for v in by_ratio):
-        arch = PointedArch.from_radii(args.Ri, args.Re, args.e, width=width)
-    elif all(v is not None for v in by_ratio) and all(v is None for v in by_radii):
-        arch = PointedArch.from_ratios(args.Sh, args.Sd, args.Rc, width=width)
-    else:
-        raise ArchdemInputError("give a specimen id, or all of --Ri --Re --e, or all of --Sh --Sd --Rc")
-    # lengths that follow from the given ones are bounded too (a ring 1e-280 m thick has no blocks)
-    for what, v in (("ring thickness", arch.t), ("span", arch.span), ("rise", arch.rise)):
-        if not MIN_LENGTH_M <= v:
-            raise ArchdemInputError(f"these parameters give a {what} of {v:.3g} m, below {MIN_LENGTH_M:g} m")
-    label = f"Sh{arch.Sh:.3g}-Sd{arch.Sd:.3g}-Rc{arch.Rc:.3g}"
-    return label, arch
-
-
-PIER_OPTIONS = ("pier_height", "pier_width", "pier_depth", "pier_offset", "pier_courses", "pier_load")
-#: Largest superimposed load on a pier [kN] (a 50 m column of masonry 3 m square is about 10^4 kN).
-MAX_PIER_LOAD_KN = 1e6
-
-
-def piers_from_args(args: argparse.Namespace) -> Piers | None:
-    """The :class:`~specimens.piers.Piers` of the ``--pier-*`` options (None without ``--pier-height``)."""
-    given = {k: getattr(args, k, None) for k in PIER_OPTIONS if getattr(args, k, None) is not None}
-    if not given:
-        return None
-    if "pier_height" not in given or "pier_width" not in given:
-        raise ArchdemInputError("piers need both --pier-height and --pier-width")
-    for k in ("pier_height", "pier_width", "pier_depth", "pier_offset"):
-        v = given.get(k)
-        lo = 0.0 if k == "pier_offset" else MIN_LENGTH_M
-        if v is not None and not (math.isfinite(v) and lo <= v <= MAX_LENGTH_M):
-            raise ArchdemInputError(f"--{k.replace('_', '-')} must be a length between {lo:g} and {MAX_LENGTH_M:g} m, "
-                                    f"got {v:g}")
-    load = given.get("pier_load", 0.0)
-    if not (math.isfinite(load) and 0 <= load <= MAX_PIER_LOAD_KN):
-        raise ArchdemInputError(f"--pier-load must be a force between 0 and {MAX_PIER_LOAD_KN:g} kN, got {load:g}")
-    return Piers(given["pier_height"], given["pier_width"], given.get("pier_depth"), given.get("pier_offset", 0.0),
-                 given.get("pier_courses", 1), load * 1e3)
+def arch_request(args: argparse.Namespace) -> ArchRequest:
+    """The :class:`~dem.common.request.ArchRequest` of the arch options (checked); with ``--geometry`` the
+    command's configuration becomes :data:`~specimens.drawn.DRAWN_CONFIG` (a drawing's bodies are as drawn)
+    in its output and file names."""
+    req = ArchRequest.from_namespace(args)
+    if req.geometry is not None:
+        option_used(args, "config", False, "a drawing's blocks are as drawn, with no glued or free crown")
+        if hasattr(args, "config"):
+            args.config = DRAWN_CONFIG
+    return req
 
 
 #: Most local worker processes a command starts.
 MAX_WORKERS = 256
-#: Most voussoirs per side (a typo such as 100000 would otherwise take the machine's memory).
-MAX_VOUSSOIRS = 100
-
-
-def block_from_args(args: argparse.Namespace) -> tuple[float, float] | None:
-    """``(B, H)`` [m] of ``--block`` (half-width, half-height) when given; refused beside an arch (the
-    option table refuses its piers and contact); with neither a block nor an arch, one line asking for one."""
-    arch_given = args.id is not None or any(getattr(args, k, None) is not None for k in ("Ri", "Re", "e", "Sh", "Sd", "Rc",
-                                                                                        "geometry"))
-    if args.block is None:
-        if not arch_given:
-            raise ArchdemInputError("give a specimen id, the arch parameters or --block B H")
-        return None
-    if arch_given:
-        raise ArchdemInputError("give either --block B H or an arch, not both")
-    return float(args.block[0]), float(args.block[1])
 
 
 def workers_option(text: str) -> int:
@@ -194,101 +64,9 @@ def contact_option(text: str) -> float | str:
     if text.strip().lower() == CALIBRATED:
         return CALIBRATED
     try:
-        return check_contact(float(text))
+        return check_contact(float(text))  # the library's rule; its refusal (a ValueError) in the option's words
     except ValueError:
         raise argparse.ArgumentTypeError(f"must be a fraction in (0, 1] or '{CALIBRATED}', got {text!r}") from None
-    except ArchdemInputError as exc:
-        raise argparse.ArgumentTypeError(str(exc)) from None
-
-
-def check_density(density: float) -> float:
-    """``--density`` within DENSITY_RANGE [kg/m^3], or a one-line input error."""
-    if not (math.isfinite(density) and DENSITY_RANGE[0] <= density <= DENSITY_RANGE[1]):
-        raise ArchdemInputError(f"--density must be between {DENSITY_RANGE[0]:g} and {DENSITY_RANGE[1]:g} kg/m^3, "
-                                f"got {density:g}")
-    return float(density)
-
-
-def discretisation_kwargs(args: argparse.Namespace, arch=None) -> dict[str, Any]:
-    """The :func:`specimens.blocks.discretise` keywords of the arch options (``arch``: needed for
-    ``--contact calibrated``)."""
-    kw: dict[str, Any] = {}
-    if getattr(args, "voussoirs", None) is not None:
-        if not 1 <= args.voussoirs <= MAX_VOUSSOIRS:
-            raise ArchdemInputError(f"--voussoirs must be 1 to {MAX_VOUSSOIRS}, got {args.voussoirs}")
-        kw["n_voussoirs"] = args.voussoirs
-    if getattr(args, "density", None) is not None:
-        check_density(args.density)
-        kw["density"] = args.density
-    if getattr(args, "contact", None) is not None:
-        kw["contact"] = contact_fraction(args.contact, arch)
-    piers = piers_from_args(args)
-    if piers is not None:
-        if arch is not None:
-            piers.check(arch)
-        kw["piers"] = piers
-    return kw
-
-
-def require_standing(label: str, arch, **kw: Any) -> None:
-    """Refuse, in one line, an arch (``discretise`` keywords ``kw``) that cannot stand under its own
-    weight even without sliding: a test of its capacity would answer nothing. A drawing's refusal names
-    its gaps and the parts no joint joins; a drawing that stands with gaps says so on stderr."""
-    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from analytic.limit.limit_discrete import require_standing as _require_standing
-    from analytic.limit.limit_discrete import solve_lp
-
-    asm = discretise(arch, **kw)
-    if not isinstance(asm, DrawnAssembly):
-        _require_standing(label, asm)
-        return
-    if not solve_lp(asm, math.inf, math.inf).stands:
-        raise ArchdemInputError(asm.cannot_stand(label))
-    if asm.gaps:
-        print(f"archdem: warning: {label}: {gaps_text(asm.gaps)} (no joint between them; it stands without one)",
-              file=sys.stderr)
-
-
-#: Figure formats the commands write (matplotlib's, by the file's suffix).
-FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
-
-
-def figure_file(path: str, option: str = "--plot"):
-    """A new figure file: a known suffix, not an existing file or folder; checked before any run."""
-    p = Path(path)
-    if p.suffix.lower() not in FIGURE_SUFFIXES:
-        raise ArchdemInputError(f"{option} must end in {', '.join(FIGURE_SUFFIXES)}, got {p.name!r}")
-    check_name(p)
-    if p.is_dir():
-        raise ArchdemInputError(f"{option} {p} is a folder; give a file name")
-    return writable_file(p, overwrite=False)
-
-
-def study_path(args: argparse.Namespace, default_dir: str, stem: str) -> tuple[str, bool]:
-    """``(path, resume)`` of a study command's ``--out`` / ``--resume`` (one rule for every study):
-    a mistyped ``--resume`` name is refused rather than starting a new study under it, and an
-    existing or unwritable ``--out`` before any run."""
-
-    if args.resume is not None and args.out is not None:
-        raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
-    if args.resume and os.path.isdir(args.resume):
-        raise ArchdemInputError(f"--resume {args.resume} is a folder; a study is one .h5 file")
-    if args.resume is not None and not os.path.isfile(args.resume):
-        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
-    if args.resume:
-        return args.resume, True
-    if args.out is not None:
-        out = Path(args.out)
-        if out.name:
-            check_name(out)
-        if not out.name or out.is_dir():
-            raise ArchdemInputError(f"--out {args.out!r}: give a study file name (STUDY.h5), not a folder")
-        if out.exists() or out.is_symlink():
-            raise ArchdemInputError(f"--out {out} exists; a study is never overwritten (resume it with --resume, "
-                                    "or choose another file)")
-        can_make_dir(out.parent)
-        return args.out, False
-    return str(unique_run_path(can_make_dir(default_dir), stem)), False
 
 
 #: Options that say where and how a study runs, not what it computes: outside its stored definition.
@@ -351,11 +129,8 @@ def restore_study(args: argparse.Namespace) -> None:
 
     if getattr(args, "out", None):  # said first: which of the two was meant is the user's to say
         raise ArchdemInputError("give --out (new study) or --resume STUDY.h5, not both")
-    if os.path.isdir(args.resume):
-        raise ArchdemInputError(f"--resume {args.resume} is a folder; a study is one .h5 file")
-    if not os.path.isfile(args.resume):  # said before any option the study would have given is missed
-        raise ArchdemInputError(f"--resume {args.resume!r}: no such study file; start a new study with --out")
-    stored = stored_definition(args.resume)
+    # the file checked before any option the study would have given is missed
+    stored = stored_definition(resumed_study(args.resume))
     if stored is None:
         return
     mine = given(args)
@@ -377,9 +152,9 @@ def print_json(obj: Any) -> None:
     print(json.dumps(obj, indent=2, default=json_default, allow_nan=True))
 
 
-def parse_grid(text: str, what: str = "--freq") -> list[float]:
-    """A grid option: :func:`foundation.io.parse_grid` (one parser for every command)."""
-    return _parse_grid(text, what)
+def answer(as_json: bool, obj: Any, lines: Iterable[str]) -> None:
+    """A command's answer: ``obj`` as JSON (``--json``), otherwise its ``lines`` of text."""
+    print_json(obj) if as_json else print("\n".join(lines))
 
 
 def settings_kwargs(args: argparse.Namespace) -> dict[str, Any]:
@@ -391,35 +166,9 @@ def settings_kwargs(args: argparse.Namespace) -> dict[str, Any]:
 
 
 def contact_law_settings(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
-    """The contact-law fields of :class:`dem.core.settings.Settings` from the command line ({} = rigid),
-    for the specimen ``specimen_id`` (``--joints table-5.1``) and the engine ``args.engine``."""
-    out = _contact_law(args, specimen_id)
-    engines = (getattr(args, "engine", None), getattr(args, "dynamics_engine", None))
-    if out and "mujoco" in engines and not (out.get("damping_beta") or out.get("damping_xi")):
-        raise ArchdemInputError("compliant joints on MuJoCo (--engine mujoco, the shakes' default) need --damping-beta or "
-                                "--damping-xi: undamped, the blocks keep bouncing on their springs and the joints slip "
-                                "(docs/engines.md#10-compliant-joints)")
-    return out
-
-
-def _contact_law(args: argparse.Namespace, specimen_id: str | None) -> dict[str, Any]:
-    """The options' law, checked by :class:`dem.core.settings.Settings` (its checks and messages); the
-    command line adds only what is its own: --joints beside the other options, and the law implied by
-    --kn/--youngs/--damping-* without --contact-law (the option table refuses --ks)."""
-    kn, youngs, beta, xi = (getattr(args, k, None) for k in ("kn", "youngs", "damping_beta", "damping_xi"))
-    law = getattr(args, "contact_law", None)
-    given = {k: v for k, v in (("kn", kn), ("youngs", youngs), ("damping_beta", beta), ("damping_xi", xi))
-             if v is not None}
-    if getattr(args, "joints", None) == STUDY_JOINTS:
-        if given or law == "rigid":
-            raise ArchdemInputError(f"--joints {STUDY_JOINTS} sets the joints: give it without --contact-law rigid, "
-                                    "--kn or --damping-*")
-        return joint_law(STUDY_JOINTS, specimen_id)
-    if law is None:
-        law = "compliant" if given else default_of(Settings, "contact_law")
-    out = {"contact_law": law, **given}
-    Settings(**out)  # the law's own checks and messages
-    return {} if law == "rigid" else out
+    """:func:`dem.common.joints.joint_law_settings` of the joint-law options and the engines of ``args``."""
+    law = (getattr(args, k, None) for k in ("contact_law", "kn", "youngs", "damping_beta", "damping_xi", "joints"))
+    return joint_law_settings(*law, specimen_id, (getattr(args, "engine", None), getattr(args, "dynamics_engine", None)))
 
 
 def friction_option(text: str) -> float:
@@ -444,13 +193,15 @@ Rule = tuple[Condition | None, str]
 
 @dataclass(frozen=True)
 class Option:
-    """One command-line option, declared once: its flags, help, argparse keywords (``type`` is its one
-    validator where the library has none of its own; a default only from a library object), ``where``:
-    per command, the condition under which it does something and what it belongs to otherwise, and
-    ``per``: a command's own keywords (help, choices, default)."""
+    """One command-line option, declared once: its flags, its help (the library field ``(cls, name)`` whose
+    metadata holds it, :func:`~foundation.fields.option_help`, or a text whose ``{default}`` is the
+    command's), argparse keywords (``type`` is its one validator where the library has none of its own; a
+    default only from a library object; ``shown``: the default its help says), ``where``: per command,
+    the condition under which it does something and what it belongs to otherwise, and ``per``: a
+    command's own keywords (help, choices, default, shown)."""
 
     flags: tuple[str, ...]
-    help: str
+    help: str | tuple[type, str]
     where: dict[str, Rule]
     kw: dict[str, Any] = field(default_factory=dict)
     per: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -510,35 +261,27 @@ _ENSEMBLE_RUNS = (_no_ensemble, "an ensemble runs the default hold protocol")
 #: processes, the contact fraction.
 _LAW = _on("tilt shake threshold fragility map", tilt=(_no_ensemble, "an ensemble runs rigid joints"), domain=_DEM,
            campaign=_steps("modes tilt lab map piers shake record fragility drawing", "runs joints"))
-_SWEEPS = _steps("tilt lab map piers shake record fragility", "runs a sweep")
-_DT = f"time step [s] (default {DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, {default_of(Settings, 'dt'):g} on the other engines)"
+_SWEEPS = _steps("tilt lab map piers shake record fragility mode-map", "runs a sweep")
+#: The default the dynamic commands' --dt help says: the dynamics engine's step, else the field's.
+_DT = f"{DYNAMICS_DT:g} on {DYNAMICS_ENGINE}, {default_of(Settings, 'dt'):g} on the other engines"
+_A, _S = ArchRequest, Settings  # the library objects whose fields' metadata hold the options' help
 
 OPTIONS: tuple[Option, ...] = (
-    Option(("id",), "specimen id (see `archdem specimens`)", _on(ARCH_COMMANDS), {"nargs": "?"}, example="Sh02-Sd020"),
+    Option(("id",), (_A, "id"), _on(ARCH_COMMANDS), {"nargs": "?"}, example="Sh02-Sd020"),
     *(Option((f"--{k}",), "", _on(ARCH_COMMANDS), {"type": float}, group="arch", example="0.2") for k in ARCH_PARAMETERS),
-    Option(("--width",), f"out-of-plane width [m] (default: the specimen's, else {SPECIMEN_WIDTH:g})",
-           _on(ARCH_COMMANDS), {"type": float}, group="arch", example="0.2"),
-    Option(("--voussoirs",), f"voussoirs per side, 1 to {MAX_VOUSSOIRS} (default {DEFAULT_VOUSSOIRS})",
-           _on(ARCH_COMMANDS) | _ARCH_ONLY, {"type": int}, group="arch", example="4"),
-    Option(("--density",), f"density [kg/m^3], {DENSITY_RANGE[0]:g} to {DENSITY_RANGE[1]:g} (default "
-           f"{DEFAULT_DENSITY:g}) of the specimens' aerated concrete; a drawing's: the one its file states, else "
-           f"{DRAWN_DENSITY:g}, masonry. Masses and forces scale with it; a uniform density changes no multiplier "
-           "(LP, tilt lambda)", _on(ARCH_COMMANDS, tilt=(_no_ensemble, "an ensemble uses the default density")),
-           {"type": float}, group="arch", example="2000"),
-    *(Option((f"--pier-{k}",), text, _on(ARCH_COMMANDS + " map") | _on(BLOCK_COMMANDS, _arch, "it sets an arch on "
-             "piers, not a --block"), {"type": kind, "metavar": m}, group="piers", example=x) for k, m, kind, x, text in (
-        ("height", "H", float, "0.2", "pier height from the ground to the springing line"),
-        ("width", "B", float, "0.1", "in-plane pier width, at least the ring thickness plus the offset"),
-        ("depth", "D", float, "0.1", "out-of-plane pier depth (default: the arch's width)"),
-        ("offset", "O", float, "0", "how far the pier's inner face stands inside the opening beyond the intrados "
-                                    f"springing (default {default_of(Piers, 'offset'):g})"),
-        ("courses", "N", int, "2", f"courses per pier, 1 to {MAX_COURSES} (default {default_of(Piers, 'courses')})"),
-        ("load", "KN", float, "1", f"superimposed load on each pier [kN], 0 to {MAX_PIER_LOAD_KN:g}, e.g. the masonry "
-                                   "above: carried as mass at the centre of the pier's top (default 0)"))),
-    Option(("--geometry",), "blocks drawn as closed outlines: .dxf (polylines), .csv (block,x,z[,layer]), .obj/.stl "
-           f"(convex prisms); at most {MAX_BLOCKS} blocks and {MAX_LENGTH_M:g} m across", _on(ARCH_COMMANDS + " map"),
-           {"metavar": "FILE"}, group="drawing", example="arch.dxf"),
-    Option(("--units",), f"length unit of the drawing if the file does not state it ({', '.join(UNITS)}; default m)",
+    Option(("--width",), (_A, "width"), _on(ARCH_COMMANDS), {"type": float}, group="arch", example="0.2"),
+    Option(("--voussoirs",), (_A, "voussoirs"), _on(ARCH_COMMANDS) | _ARCH_ONLY, {"type": int}, group="arch",
+           example="4"),
+    Option(("--density",), (_A, "density"), _on(ARCH_COMMANDS, tilt=(_no_ensemble, "an ensemble uses the default "
+                                                                       "density")), {"type": float}, group="arch",
+           example="2000"),
+    *(Option((f"--pier-{k}",), (_A, f"pier_{k}"), _on(ARCH_COMMANDS + " map") | _on(BLOCK_COMMANDS, _arch, "it sets "
+             "an arch on piers, not a --block"), {"type": kind, "metavar": m}, group="piers", example=x)
+      for k, m, kind, x in (("height", "H", float, "0.2"), ("width", "B", float, "0.1"), ("depth", "D", float, "0.1"),
+                            ("offset", "O", float, "0"), ("courses", "N", int, "2"), ("load", "KN", float, "1"))),
+    Option(("--geometry",), (_A, "geometry"), _on(ARCH_COMMANDS + " map"), {"metavar": "FILE"}, group="drawing",
+           example="arch.dxf"),
+    Option(("--units",), (_A, "units"),
            _on(ARCH_COMMANDS + " map", _drawing, "it is a drawing's length unit (--geometry)", shake=(
                lambda a: _drawing(a) or a.record is not None, "it is a drawing's length unit (--geometry) or a "
                                                               "record's (--record)"), record=(None, "")),
@@ -548,20 +291,16 @@ OPTIONS: tuple[Option, ...] = (
                       f"not say ({', '.join(RECORD_UNITS)})"},
             "record": {"choices": RECORD_UNITS, "help": "units of the numbers in the file (needed for CSV without units "
                                                         "in its header)"}}, group="drawing", example="mm"),
-    Option(("--depth",), "out-of-plane depth of the drawn blocks [m] where the drawing does not state it (archdem "
-           "draw: optional, a plane drawing needs none)",
-           _on(ARCH_COMMANDS + " map", _drawing, "it is the depth of a drawing's blocks (--geometry)"),
+    Option(("--depth",), (_A, "depth"), _on(ARCH_COMMANDS + " map", _drawing, "it is the depth of a drawing's blocks "
+                                                                                "(--geometry)"),
            {"type": float, "metavar": "D"}, group="drawing", example="0.1"),
-    Option(("--contact",), "effective contact: every joint touches within its central fraction C of the depth, in "
-           "(0, 1]; 'calibrated': from the edge loss fitted to laboratory tilt tests (archdem calibrate); masses stay "
-           f"those of the full blocks (default {default_of(discretise, 'contact'):g}: the full joint)",
-           _on(ARCH_COMMANDS + " map") | _ARCH_ONLY
-           | {"campaign": _steps("catalogue analytic modes tilt map piers shake record", "cuts joints")},
+    Option(("--contact",), (_A, "contact"), _on(ARCH_COMMANDS + " map") | _ARCH_ONLY
+           | {"campaign": _steps("catalogue analytic modes tilt map piers shake record mode-map", "cuts joints")},
            {"type": contact_option, "metavar": "C|calibrated"},
-           {c: {"help": "effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate) "
-                        "(default {default:g}: the full joint)"} for c in ("map", "campaign")}, example="0.9"),
-    Option(("--block",), "a rectangular block of half-width B and half-height H [m] instead of an arch",
-           _on(BLOCK_COMMANDS), {"nargs": 2, "type": float, "metavar": ("B", "H")}, example=None),
+           {c: {"help": "effective contact of every joint, in (0, 1], or 'calibrated' (archdem calibrate)"}
+            for c in ("map", "campaign")}, example="0.9"),
+    Option(("--block",), (_A, "block"), _on(BLOCK_COMMANDS), {"nargs": 2, "type": float, "metavar": ("B", "H")},
+           example=None),
     Option(("--config",), "discrete configuration: the crown glued or free (default {default})",
            _on("tilt shake threshold analytic mesh draw map", lambda a: not _drawing(a),
                "a drawing's blocks are as drawn, with no glued or free crown")
@@ -570,60 +309,43 @@ OPTIONS: tuple[Option, ...] = (
            | _on("campaign compare-engines compare-shake", domain=_DEM),
            {"choices": ("glued", "free"), "default": default_of(discretise, "config")},
            {"domain": {"help": "DEM: discrete configuration"}}, example="free"),
-    Option(("--mu-joint",), "block-block friction (default {default:g})",
-           _on("tilt shake threshold analytic", fragility=(_arch, "a --block has no joint between blocks (its "
-                                                                   "friction is --mu-base)"), domain=_DEM),
-           {"type": friction_option, "default": default_of(Settings, "mu_joint")},
-           {"fragility": {"help": "nominal block-block friction (default {default:g})"},
-            "analytic": {"default": None, "help": f"block-block friction (default {REFERENCE_MU_JOINT:g})"},
-            "domain": {"default": None, "help": f"DEM: block-block friction (default {REFERENCE_MU_JOINT:g})"}},
-           example="0.6"),
-    Option(("--mu-base",), "block-base friction (default {default:g})",
-           _on("tilt shake threshold analytic fragility map", domain=_DEM),
-           {"type": friction_option, "default": default_of(Settings, "mu_base")},
-           {"fragility": {"help": "nominal block-base friction (default {default:g})"},
-            "analytic": {"default": None, "help": f"block-base friction (default {REFERENCE_MU_BASE:g})"},
-            "domain": {"default": None, "help": f"DEM: block-base friction (default {REFERENCE_MU_BASE:g})"}},
-           example="0.7"),
-    Option(("--planar",), "constrain the blocks to the arch plane", _on("shake threshold fragility",
-           tilt=_ENSEMBLE_RUNS), {"action": "store_true"}, example=None),
-    Option(("--dt",), _DT, _on("shake threshold fragility compare-engines", tilt=_ENSEMBLE_RUNS,
-                              domain=(_dem, "it is the DEM's time step (--engine dem or a named engine)")),
-           {"type": float}, {"tilt": {"help": f"time step [s] (default {default_of(Settings, 'dt'):g})"},
-                             "compare-engines": {"help": f"time step [s] for both engines (default "
-                                                         f"{default_of(Settings, 'dt'):g})"},
-                             "domain": {"help": "DEM: " + _DT}}, example="2.5e-4"),
-    Option(("--engine",), "physics engine (default {default}; see docs/engines.md §5)",
-           _on("tilt map shake threshold fragility domain",
-               campaign=_steps("tilt lab map piers drawing", "tilts (--dynamics-engine runs the shakes)"),
-               assess=(lambda a: bool(a.records), "the engine runs the --records on the DEM")),
+    *(Option((f"--mu-{k}",), (_S, f"mu_{k}"), where, {"type": friction_option, "default": default_of(Settings, f"mu_{k}")},
+             {"fragility": {"help": f"nominal block-{on} friction"}, "analytic": {"default": None},
+              "domain": {"default": None, "help": f"DEM: block-{on} friction"}}, example=x)
+      for k, on, where, x in (("joint", "block", _on("tilt shake threshold analytic", domain=_DEM, fragility=(
+          _arch, "a --block has no joint between blocks (its friction is --mu-base)")), "0.6"),
+          ("base", "base", _on("tilt shake threshold analytic fragility map", domain=_DEM), "0.7"))),
+    Option(("--planar",), (_S, "planar"), _on("shake threshold fragility", tilt=_ENSEMBLE_RUNS),
+           {"action": "store_true"}, example=None),
+    Option(("--dt",), (_S, "dt"), _on("shake threshold fragility compare-engines", tilt=_ENSEMBLE_RUNS,
+                                      domain=(_dem, "it is the DEM's time step (--engine dem or a named engine)")),
+           {"type": float}, {c: {"shown": _DT} for c in ("shake", "threshold", "fragility")}
+           | {"compare-engines": {"help": "time step for both engines"}, "domain": {"help": "DEM: time step", "shown": _DT}},
+           example="2.5e-4"),
+    Option(("--engine",), (_S, "engine"), _on("tilt map shake threshold fragility domain",
+           campaign=_steps("tilt lab map piers drawing", "tilts (--dynamics-engine runs the shakes)"),
+           assess=(lambda a: bool(a.records), "the engine runs the --records on the DEM")),
            {"choices": tuple(available_engines()), "default": default_of(Settings, "engine")},
            {c: {"default": DYNAMICS_ENGINE} for c in ("shake", "threshold", "fragility", "assess")}
-           | {"domain": {"choices": ("analytic", "dem", *available_engines()), "default": "analytic",
+           | {"domain": {"choices": ("analytic", "dem", *available_engines()), "default": "analytic", "shown": None,
                          "help": "analytic linkage, or the DEM: 'dem' runs the shakes' default engine "
                                  f"({DYNAMICS_ENGINE}), or name one"}}, example="pybullet"),
     Option(("--dynamics-engine",), "engine of the shake, record and fragility steps (default {default}; --engine "
            "runs the others)", {"campaign": _steps("shake record fragility", "shakes")},
            {"choices": tuple(available_engines())}, example="pybullet"),
-    Option(("--solver-iterations",), f"PyBullet's solver iterations per step (default "
-           f"{default_of(PyBulletOptions, 'solver_iterations')})",
+    Option(("--solver-iterations",), (PyBulletOptions, "solver_iterations"),
            {"fragility": (lambda a: a.engine == "pybullet", "it is PyBullet's solver (--engine pybullet)")},
            {"type": int}, example="50"),
-    Option(("--contact-law",), f"joints: as stiff as the engine makes them, or springs (default "
-           f"{default_of(Settings, 'contact_law')}; compliant with --kn)", _LAW, {"choices": CONTACT_LAWS}, group="law",
-           example="rigid"),
-    Option(("--kn",), "normal joint stiffness per unit area [Pa/m] (compliant)", _LAW | _on("modes"),
-           {"type": float}, {"modes": {"help": "normal joint stiffness per unit area [Pa/m]"}}, group="law",
-           example="1e8"),
-    Option(("--youngs",), "or the blocks' Young's modulus [Pa]: kn = E / the blocks' length across their joints",
-           _LAW | _on("modes"), {"type": float, "metavar": "E_PA"}, group="law", example="1e9"),
+    Option(("--contact-law",), (_S, "contact_law"), _LAW, {"choices": CONTACT_LAWS}, group="law", example="rigid"),
+    Option(("--kn",), (_S, "kn"), _LAW | _on("modes"), {"type": float}, {"modes": {
+           "help": "normal joint stiffness per unit area"}}, group="law", example="1e8"),
+    Option(("--youngs",), (_S, "youngs"), _LAW | _on("modes"), {"type": float, "metavar": "E_PA"}, group="law",
+           example="1e9"),
     Option(("--ks",), f"shear joint stiffness per unit area [Pa/m] (modes; default {KS_OVER_KN:.3f} kn)",
            _on(" ".join(_LAW), lambda a: False, "the engines' joints stick rigidly until they slide; shear stiffness "
                "goes to archdem modes") | _on("modes"), {"type": float}, group="law", example="1e8"),
-    Option(("--damping-beta",), "stiffness-proportional Rayleigh damping beta_R of the joints [s] "
-           f"(default {default_of(Settings, 'damping_beta'):g})", _LAW, {"type": float}, group="law", example="1e-3"),
-    Option(("--damping-xi",), f"or the joints' damping ratio at the rotational-impact frequency, 0-{MAX_DAMPING_XI:g}",
-           _LAW, {"type": float}, group="law", example="0.5"),
+    Option(("--damping-beta",), (_S, "damping_beta"), _LAW, {"type": float}, group="law", example="1e-3"),
+    Option(("--damping-xi",), (_S, "damping_xi"), _LAW, {"type": float}, group="law", example="0.5"),
     Option(("--joints",), "the reference study's joints of a catalogue specimen (k_n and beta_R of its Table 5.1)",
            _LAW, {"choices": JOINT_SETS}, group="law", example=STUDY_JOINTS),
     Option(("--workers",), "processes (default: all cores)", _on(
@@ -635,6 +357,11 @@ OPTIONS: tuple[Option, ...] = (
            _on("map threshold fragility compare-shake", domain=(
                _dem, "it runs the DEM's domain (--engine dem); the analytic one runs here"), campaign=_SWEEPS),
            example="tcp://127.0.0.1:8786"),
+    Option(("--no-check",), "skip the settled-or-range check (the bracket rerun at half the step, and on LMGC90 at "
+           "6-8 Hz with sliding joints)", _on("threshold", domain=(_dem, "it checks the DEM's thresholds (--engine dem)")),
+           {"action": "store_true"}, {"domain": {"help": "DEM: skip the settled-or-range check of each threshold (the "
+                                                         "bracket rerun at half the step, and on LMGC90 at 6-8 Hz with "
+                                                         "sliding joints)"}}, example=None),
     Option(("--out",), "new study file (default: a new one under runs/)", _on(
            "map fragility compare-shake tilt shake mesh draw campaign calibrate animate"), {"metavar": "STUDY.h5"},
            {"tilt": {"metavar": None, "help": "directory for the result file (default {default})"},
@@ -679,9 +406,14 @@ def add_options(p: argparse.ArgumentParser, command: str, *dests: str, **default
             continue
         kw = {"default": None, **o.kw, **o.per.get(command, {})}
         kw["default"] = defaults.get(o.dest, kw["default"])
-        if "{default" in (text := kw.get("help", o.help)):
-            text = text.format(default=kw["default"])
-        kw["help"] = text
+        if isinstance(o.help, str):
+            text = kw.get("help", o.help)
+            kw["help"] = text.format(default=kw["default"]) if "{default" in text else text
+        else:  # the field's help; the default said: the command's, else the library's (none for a flag)
+            f = next(f for f in dataclasses.fields(o.help[0]) if f.name == o.help[1])
+            meta = {**f.metadata, **{k: kw.pop(k) for k in ("help", "shown") if k in kw}}
+            meta |= {"shown": None} if kw.get("action") == "store_true" else {}
+            kw["help"] = option_help(meta, f.default if kw["default"] is None else kw["default"])
         if kw.get("action") == "store_true" or o.flags == ("id",):
             kw.pop("default")
         if o.group and o.group not in groups:

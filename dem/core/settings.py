@@ -10,7 +10,7 @@ result file.
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, fields, replace
+from dataclasses import asdict, dataclass, field, fields, replace
 
 from dem.core.engines.options import EngineOptions, engine_options, legacy_options
 from specimens.constants import REFERENCE_MU_BASE, REFERENCE_MU_JOINT, G
@@ -37,28 +37,41 @@ DYNAMICS_DT = 1.25e-4
 class Settings:
     """Simulation settings (SI units)."""
 
+    # an option's help and unit sit in its field's metadata (foundation.fields.option_help); "shown": the
+    # default the help says instead of the field's (None: none)
+
     # physics
-    mu_joint: float = REFERENCE_MU_JOINT  # block-block Coulomb friction (tan 30 deg)
-    mu_base: float = REFERENCE_MU_BASE  # block-base Coulomb friction (tan 45 deg)
+    mu_joint: float = field(default=REFERENCE_MU_JOINT, metadata={"help": "block-block friction"})  # tan 30 deg
+    mu_base: float = field(default=REFERENCE_MU_BASE, metadata={"help": "block-base friction"})  # tan 45 deg
     restitution: float = 0.0  # normal restitution; 0 = plastic impacts (masonry)
     g: float = G  # gravity magnitude [m/s^2]; the tilt rotates it at constant magnitude
-    planar: bool = False  # True: out-of-plane velocities zeroed after every step (2D comparison)
+    # True: out-of-plane velocities zeroed after every step (2D comparison)
+    planar: bool = field(default=False, metadata={"help": "constrain the blocks to the arch plane"})
 
     # engine and step: 0.5 ms with PyBullet's 100 iterations is the cheapest pair that keeps the no-sliding
     # lambda within 3 % of the LP and the hinge layouts (docs/decisions/006-solver-settings.md)
-    engine: str = "pybullet"  # the tilt's and the statics'; shakes default to DYNAMICS_ENGINE (dynamics_settings)
-    dt: float = 5e-4  # [s]; the no-sliding lambda bias shrinks with dt
+    # the tilt's and the statics'; shakes default to DYNAMICS_ENGINE (dynamics_settings)
+    engine: str = field(default="pybullet", metadata={"help": "physics engine, see docs/engines.md §5"})
+    # the no-sliding lambda bias shrinks with dt
+    dt: float = field(default=5e-4, metadata={"help": "time step", "unit": "s"})
     # the engine's own solver and contact options (dem.core.engines.options; a dict of their fields is read
     # too); None: the engine's defaults, which is what the field holds after construction
     engine_options: EngineOptions | None = None
 
     # joints: "rigid" is as stiff as each engine's solver makes it (the validated default); "compliant" puts
     # springs and dashpots of these per-unit-area values at the engines' contact points (dem.core.contact)
-    contact_law: str = "rigid"
-    kn: float = 0.0  # [Pa/m] normal joint stiffness per unit area (compliant law)
-    youngs: float = 0.0  # [Pa] or the blocks' Young's modulus: k_n = E / (the blocks' length across their joints)
-    damping_beta: float = 0.0  # [s] stiffness-proportional Rayleigh coefficient beta_R (compliant law)
-    damping_xi: float = 0.0  # or the damping ratio at the rotational-impact frequency omega_r: beta_R = 2 xi / omega_r
+    contact_law: str = field(default="rigid", metadata={
+        "help": "joints: as stiff as the engine makes them, or springs (compliant with --kn)"})
+    kn: float = field(default=0.0, metadata={  # 0: none given
+        "help": "normal joint stiffness per unit area (compliant)", "unit": "Pa/m", "shown": None})
+    youngs: float = field(default=0.0, metadata={  # k_n = E / (the blocks' length across their joints)
+        "help": "or the blocks' Young's modulus: kn = E / the blocks' length across their joints", "unit": "Pa",
+        "shown": None})
+    damping_beta: float = field(default=0.0, metadata={
+        "help": "stiffness-proportional Rayleigh damping beta_R of the joints", "unit": "s"})
+    damping_xi: float = field(default=0.0, metadata={  # beta_R = 2 xi / omega_r
+        "help": f"or the joints' damping ratio at the rotational-impact frequency, 0-{MAX_DAMPING_XI:g}",
+        "shown": None})
 
     # detection (docs/physics/dem.md#5-collapse-criterion)
     collapse_fraction: float = 0.06  # collapse: any body point moved > this x size (ring thickness)

@@ -11,10 +11,12 @@ report derive from it (docs/architecture.md#the-experiment-contract).
 """
 from __future__ import annotations
 
+import argparse
+import dataclasses
 import importlib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, ClassVar
+from typing import Any, Callable, ClassVar, get_args, get_type_hints
 
 from dem.common.tables import (
     Column,
@@ -27,9 +29,11 @@ from dem.common.tables import (
     write_csv,
     write_h5_group,
 )
+from foundation.fields import option_help
 
 __all__ = ["Column", "Schema", "Result", "Step", "Summary", "Experiment", "Tables", "resolve", "cells_html", "fmt", "read_csv",
-           "table_html", "to_json_rows", "write_csv", "write_h5_group"]
+           "table_html", "to_json_rows", "write_csv", "write_h5_group", "spec_options", "add_spec_options",
+           "spec_from_args", "given_options"]
 
 #: Typed tables by name (a step's table name -> its typed rows), as the report's summary reads them.
 Tables = dict[str, list[dict]]
@@ -116,3 +120,55 @@ class Experiment:
         names = [s.name for s in self.steps]
         if len(set(names)) != len(names):
             raise ValueError(f"experiment {self.name}: a step named twice in {names}")
+
+
+# ------------------------------------------------------------------ a command's options from a spec
+def spec_options(spec: type) -> list[dataclasses.Field]:
+    """The fields of the dataclass ``spec`` that are options: those whose metadata has a ``help``."""
+    return [f for f in dataclasses.fields(spec) if "help" in f.metadata]
+
+
+def _option_type(hint: Any) -> Any:
+    """The argparse type of a field's annotation: ``X`` of ``X | None`` and of ``tuple[X, ...]``."""
+    while get_args(hint):
+        hint = next(a for a in get_args(hint) if a is not type(None))
+    return hint
+
+
+def add_spec_options(parser: argparse.ArgumentParser, spec: type) -> None:
+    """One option of ``parser`` per option field of ``spec`` (:func:`spec_options`): its flag from the
+    field's name (``Tc_star``: ``--Tc-star``) and the metadata's ``aliases``, its type from the annotation (``bool``: a flag), its
+    ``choices``, ``metavar``, ``nargs`` and ``required`` from the metadata, its default the field's (the library's),
+    its help the metadata's ``help``, ``unit`` and the default (``shown`` where the field's is None)."""
+    hints = get_type_hints(spec)
+    for f in spec_options(spec):
+        m, kind = f.metadata, _option_type(hints[f.name])
+        text = option_help(m, f.default)
+        kw = {k: m[k] for k in ("choices", "metavar", "nargs", "required") if k in m}
+        kw |= {"action": "store_true"} if kind is bool else {"type": kind, "default": f.default}
+        parser.add_argument("--" + f.name.replace("_", "-"), *m.get("aliases", ()), dest=f.name, help=text.replace("%", "%%"), **kw)
+
+
+def spec_from_args(spec: type, args: argparse.Namespace, **fixed: Any) -> Any:
+    """``spec`` of the parsed options (lists as tuples) and ``fixed`` (its fields that are no option); its
+    field ``given``, if it has one, receives the options set by hand (``args.given``, which ``archdem`` records)."""
+    kw = {f.name: getattr(args, f.name) for f in spec_options(spec)}
+    kw = {k: tuple(v) if isinstance(v, list) else v for k, v in kw.items()}
+    if "given" in {f.name for f in dataclasses.fields(spec)} and getattr(args, "given", None) is not None:
+        kw["given"] = frozenset(args.given) & kw.keys()
+    return spec(**kw, **fixed)
+
+
+def given_options(parser: argparse.ArgumentParser, argv: list[str], command: str) -> frozenset[str]:
+    """The destinations ``argv`` sets explicitly for the sub-command ``command`` of ``parser`` (a default
+    given by hand counts): the command's options parsed again with every default suppressed."""
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
+    saved = [(a, a.default) for a in sub._actions]
+    try:
+        for a, _ in saved:
+            a.default = argparse.SUPPRESS
+        ns, _ = sub.parse_known_args(argv[argv.index(command) + 1:])
+    finally:
+        for a, d in saved:
+            a.default = d
+    return frozenset(vars(ns)) - {"func"}

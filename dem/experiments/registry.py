@@ -22,6 +22,7 @@ DECLARED = (
     "dem.experiments.assessment.experiment",
     "dem.experiments.compare_engines.experiment",
     "dem.experiments.settle.experiment",
+    "dem.experiments.mode_map.experiment",
 )
 
 

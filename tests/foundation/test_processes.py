@@ -1,5 +1,6 @@
 """Workers end with the process that started them: a SIGKILLed command leaves no process behind,
 and its study resumes with nothing lost or repeated."""
+import os
 import subprocess
 import sys
 
@@ -25,3 +26,18 @@ def test_a_sigkilled_map_leaves_no_worker_and_resumes(tmp_path):
     after = stored_ok(study)
     assert len(after) == 4
     assert {k: after[k] for k in before} == before  # the cases stored before the kill were not run again
+
+
+def test_a_closed_reader_of_stdout_is_told_and_stdout_then_goes_nowhere(monkeypatch):
+    from foundation.processes import stdout_reader_gone
+
+    r, w = os.pipe()
+    with os.fdopen(r, "r") as reader, os.fdopen(w, "w") as out:
+        monkeypatch.setattr(sys, "stdout", out)
+        assert stdout_reader_gone() is False  # its reader is there
+        reader.close()
+        assert stdout_reader_gone() is True
+        out.write("x")
+        out.flush()  # the null device now: no BrokenPipeError
+    monkeypatch.setattr(sys, "stdout", None)
+    assert stdout_reader_gone() is False  # no file descriptor

@@ -3,7 +3,7 @@ import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 from specimens import Piers, discretise, get_specimen, read_assembly
-from specimens.drawing import INFO_BOX_GID, JOINT_LABEL_GID, drawing_figure
+from specimens.drawing import INFO_BOX_GID, JOINT_LABEL_GID, drawing_figure, drawing_title
 from specimens.exchange import EXAMPLE_DRAWING
 
 
@@ -32,3 +32,11 @@ def test_info_box_covers_no_joint_label(case):
     # and the box stays on the page
     page = fig.bbox
     assert page.x0 <= info.x0 and info.x1 <= page.x1 and page.y0 <= info.y0 and info.y1 <= page.y1
+
+
+def test_the_title_names_an_arch_s_ratios_or_a_drawing_s_density_and_depth():
+    asm = discretise(get_specimen("Sh06-Sd015").arch)
+    assert drawing_title("Sh06-Sd015", asm) == "Sh06-Sd015   Sh = 0.60, Sd = 0.15"
+    drawn = discretise(read_assembly(EXAMPLE_DRAWING, depth=1.0))
+    assert drawing_title("d", drawn) == f"d\ndensity {drawn.density:g} kg/m^3"
+    assert drawing_title("d", drawn, 1.0).endswith(", blocks without a depth 1 m deep (masses per metre)")

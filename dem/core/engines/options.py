@@ -83,7 +83,7 @@ class PyBulletOptions(EngineOptions):
 
     engine: ClassVar[str] = "pybullet"
 
-    solver_iterations: int = 100
+    solver_iterations: int = field(default=100, metadata={"help": "PyBullet's solver iterations per step"})
     """Default 100 per step: 200 is no better on the validation, 50 reads joints as sliding at mu = 10."""
     contact_slop: float = 0.0
     """Default 0 m: PyBullet's own 1e-5 m lets every joint sink 10 um (about 0.1 mm of crown drop)."""

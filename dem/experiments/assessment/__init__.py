@@ -16,7 +16,7 @@ from foundation.lazy import lazy_exports
 _EXPORTS = {
     "assess_with_records": "dem.experiments.assessment.run", "ArchAssessment": "dem.experiments.assessment.run",
     "AssessSpec": "dem.experiments.assessment.run", "MonumentSpec": "dem.experiments.assessment.run",
-    "MonumentAssessment": "dem.experiments.assessment.run",
+    "MonumentAssessment": "dem.experiments.assessment.run", "AssessOptions": "dem.experiments.assessment.spec",
 }
 __all__ = list(_EXPORTS)
 
@@ -28,5 +28,6 @@ if TYPE_CHECKING:  # the same names for type checkers and editors
         MonumentSpec,
         assess_with_records,
     )
+    from dem.experiments.assessment.spec import AssessOptions
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)

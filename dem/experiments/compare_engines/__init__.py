@@ -1,5 +1,6 @@
-"""Both engines against limit analysis (``run``), the figure (``figure``), the command
-``compare-engines``.
+"""Both engines against limit analysis (``run``: ``CompareSpec`` -> ``EngineComparison``), the figure
+(``figure``), the command ``compare-engines``; the engines against each other on the shake table
+(``shake``: ``ShakeStudySpec`` -> ``ShakeStudy``), the command ``compare-shake``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

@@ -11,14 +11,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any
 
+from dem.core.engines import available_engines
 from dem.core.provenance import engine_version
 from dem.core.model import from_assembly
 from dem.core.progress import Progress
 from dem.core.settings import Settings
 from dem.experiments.tilt import TiltCheck, check_result, reference_lp, tilt
 from specimens.blocks import discretise
-from specimens.catalogue import get_specimen
+from specimens.catalogue import get_specimen, select_specimens
 from specimens.constants import NO_SLIDING_MU, REFERENCE_MU_BASE, REFERENCE_MU_JOINT
 from foundation.errors import ArchdemInputError
 from foundation.processes import worker_pool
@@ -26,6 +29,11 @@ from foundation.processes import worker_pool
 #: Friction cases (joint, base): no sliding; the reference frictions; the joints' own on a base that does not slide.
 FRICTIONS = {"none": (NO_SLIDING_MU, NO_SLIDING_MU), "reference": (REFERENCE_MU_JOINT, REFERENCE_MU_BASE),
              "joints": (REFERENCE_MU_JOINT, NO_SLIDING_MU)}
+
+#: The two engines compared by default.
+ENGINES = ("pybullet", "mujoco")
+#: ``archdem compare-engines --friction``: the friction cases of each choice.
+FRICTION_CHOICES = {"both": ("none", "reference"), "none": ("none",), "reference": ("reference",)}
 
 
 @dataclass(frozen=True)
@@ -82,7 +90,7 @@ def engine_tilt(model, settings: Settings, protocol=None, assembly=None) -> Tilt
     return check_result(tilt(model, settings, protocol, assembly=assembly), assembly)
 
 
-def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+def compare_specimen(sid: str, config: str = "glued", engines: tuple[str, ...] = ENGINES,
                      frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
                      protocol=None) -> list[ComparisonRow]:
     """Rows (one per friction case) for catalogue specimen ``sid``; ``base`` settings other than
@@ -110,7 +118,7 @@ def _one(args) -> list[ComparisonRow]:
     return compare_specimen(*args)
 
 
-def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ("pybullet", "mujoco"),
+def compare(ids: list[str], config: str = "glued", engines: tuple[str, ...] = ENGINES,
             frictions: tuple[str, ...] = ("none", "reference"), base: Settings | None = None,
             workers: int = 1, progress: Progress | None = None) -> list[ComparisonRow]:
     """:func:`compare_specimen` for each id (in ``workers`` processes), rows in input order.
@@ -150,3 +158,77 @@ def summary(rows: list[ComparisonRow]) -> dict:
         if d:
             out["max_abs_rel_diff"][f] = max(d)
     return out
+
+
+# ------------------------------------------------------------------ the comparison as archdem compare-engines runs it
+@dataclass(frozen=True)
+class CompareSpec:
+    """The comparison as ``archdem compare-engines`` takes it: the specimens (``all`` or comma-separated ids),
+    two engines (comma-separated), the friction cases (a key of :data:`FRICTION_CHOICES`), the blocks cut in
+    ``config``, every run at step ``dt`` [s] (None: the default). Checked on construction."""
+
+    specimens: str = field(default="all", metadata={"help": "all or comma-separated ids"})
+    engines: str = field(default=",".join(ENGINES), metadata={"help": "two engines"})
+    friction: str = field(default="both", metadata={
+        "help": "no sliding, reference friction " + "/".join(f"{m:g}" for m in FRICTIONS["reference"])
+                + ", or both (default)", "choices": tuple(FRICTION_CHOICES), "shown": None})
+    config: str = "glued"
+    dt: float | None = None
+
+    def __post_init__(self) -> None:
+        self.ids  # noqa: B018 (built here: the refusals in the command's order)
+        self.engine_names  # noqa: B018
+        if self.friction not in FRICTION_CHOICES:
+            raise ArchdemInputError(f"friction must be one of {', '.join(FRICTION_CHOICES)}, got {self.friction!r}")
+        self.base  # noqa: B018
+
+    @cached_property
+    def ids(self) -> list[str]:
+        return [s.id for s in select_specimens(self.specimens)]
+
+    @cached_property
+    def engine_names(self) -> tuple[str, str]:
+        engines = tuple(e.strip() for e in self.engines.split(",") if e.strip())
+        for e in engines:
+            if e not in available_engines():
+                raise ArchdemInputError(f"unknown engine {e!r}; available: {', '.join(available_engines())}")
+        if len(set(engines)) != 2 or len(engines) != 2:
+            raise ArchdemInputError(f"give two different engines to compare, got {self.engines!r}")
+        return engines
+
+    @cached_property
+    def base(self) -> Settings:
+        """The settings every run starts from (its step checked)."""
+        return Settings() if self.dt is None else Settings(dt=self.dt)
+
+    def run(self, workers: int = 1, progress: Progress | None = None) -> EngineComparison:
+        """:func:`compare` of the spec's specimens (``workers`` processes; ``progress`` as there)."""
+        rows = compare(self.ids, self.config, self.engine_names, FRICTION_CHOICES[self.friction], self.base,
+                       workers=workers, progress=progress)
+        return EngineComparison(rows, self.engine_names, self.config, self.base.dt)
+
+
+@dataclass(frozen=True)
+class EngineComparison:
+    """The rows of a comparison (:func:`compare`) of ``engines`` on blocks cut in ``config`` at step ``dt`` [s]."""
+
+    rows: list[ComparisonRow]
+    engines: tuple[str, str]
+    config: str
+    dt: float
+
+    def describe(self) -> dict[str, Any]:
+        """The JSON of ``archdem compare-engines``: the rows, their :func:`summary`, the configuration and step."""
+        return {"rows": [r.to_dict() for r in self.rows], "summary": summary(self.rows), "config": self.config,
+                "dt": self.dt}
+
+    def lines(self) -> list[str]:
+        """The table ``archdem compare-engines`` prints: per row the LP, each engine's lambda and error against
+        it, their difference and modes; then what err and diff are."""
+        e1, e2 = self.engines
+        out = [f"{'id':<12} {'friction':<9} {'LP':>7} {e1:>9} {'err':>7} {e2:>9} {'err':>7} {'diff':>7}  modes"]
+        for r in self.rows:
+            a, b = r.results[e1], r.results[e2]
+            out.append(f"{r.id:<12} {r.friction:<9} {r.lp_lam:7.4f} {a.lam:9.4f} {100 * r.err_vs_lp(e1):+6.2f}% "
+                       f"{b.lam:9.4f} {100 * r.err_vs_lp(e2):+6.2f}% {100 * r.rel_diff:+6.2f}%  {a.mode}/{b.mode}")
+        return out + ["err = (lambda - LP) / LP (an error at no sliding only); diff = (e2 - e1) / e1"]

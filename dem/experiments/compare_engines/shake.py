@@ -15,11 +15,17 @@ sliding anywhere: rocking only). docs/validation.md#19-three-engine-shake-study 
 """
 from __future__ import annotations
 
+import csv
 import math
 from collections import Counter
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from dem.core.engines import available_engines, check_engine
 from dem.core.provenance import engine_version
 from dem.core.engines.lmgc90_engine import LMGC90Options
 from dem.core.engines.mujoco_engine import DEFAULT_OPTIONS as MUJOCO_OPTIONS
@@ -28,14 +34,16 @@ from dem.core.settings import DYNAMICS_DT, DYNAMICS_ENGINE, Settings
 from dem.experiments.compare_engines.run import FRICTIONS
 from dem.experiments.shake import CHECK_MARGIN, reference_needed, static_onset, threshold
 from specimens.blocks import discretise
-from specimens.catalogue import CATALOGUE, get_specimen
+from specimens.catalogue import CATALOGUE, get_specimen, select_specimens
 from foundation.errors import ArchdemInputError
+from foundation.io import atomic_path, parse_grid
 
 STUDY_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # [Hz], the shake-table tests' range
 #: The specimens the laboratory shook: Sd 0.15 and 0.20.
 STUDY_SPECIMENS = tuple(s.id for s in CATALOGUE if round(s.arch.Sd, 3) in (0.15, 0.20))
 STUDY_FRICTIONS = ("joints", "none")
 STUDY_STEPS = (1.0, 0.5)  # integration steps as multiples of the engine's default: the default and its half
+STUDY_ENGINES = ("pybullet", "mujoco", "lmgc90")
 A_MAX_RATIO = 6.0  # top of the amplitude scan / (lambda g): the DEM domain's
 SCAN_RATIO, TOL = 1.15, 0.01  # scan step and bisection tolerance of the first collapse
 #: Two engines' readings of a feature agree when they differ by at most one scan step: band edges
@@ -62,7 +70,7 @@ def study_attrs(config: str = "glued") -> dict:
             "tol": TOL, "input": "one-cycle sine"}
 
 
-def study_cases(ids=STUDY_SPECIMENS, freqs=STUDY_FREQS, engines=("pybullet", "mujoco", "lmgc90"),
+def study_cases(ids=STUDY_SPECIMENS, freqs=STUDY_FREQS, engines=STUDY_ENGINES,
                 steps=STUDY_STEPS, frictions=STUDY_FRICTIONS, config: str = "glued") -> list[dict]:
     """One case per (specimen, friction, step, frequency, engine), in that nesting order."""
     for f in frictions:
@@ -352,3 +360,141 @@ def verdict_counts(rows: list[dict]) -> dict:
         c = out.setdefault(r["friction"], {})
         c[r["status"]] = c.get(r["status"], 0) + 1
     return out
+
+
+# ------------------------------------------------------------------ the study as archdem compare-shake runs it
+def _listed(values) -> str:
+    return ",".join(v if isinstance(v, str) else f"{v:g}" for v in values)
+
+
+def _names(text: str, what: str, allowed) -> tuple[str, ...]:
+    names = tuple(t.strip() for t in text.split(",") if t.strip())
+    if not names or len(set(names)) != len(names):
+        raise ArchdemInputError(f"{what}: give distinct names separated by commas, got {text!r}")
+    for n in names:
+        if n not in allowed:
+            raise ArchdemInputError(f"{what}: unknown {n!r}; one of {', '.join(allowed)}")
+    return names
+
+
+def _opt(default: str, help: str, unit: str = "", **meta: Any) -> Any:
+    """A field that is an option of ``archdem compare-shake`` (its help, unit; ``shown`` None: the help says
+    the default itself)."""
+    return field(default=default, metadata={"help": help, "unit": unit, **meta})
+
+
+@dataclass(frozen=True)
+class ShakeStudySpec:
+    """The engines' shake study as ``archdem compare-shake`` takes it, in the options' text: the specimens
+    (``all`` or ids), engines, sine frequencies [Hz], time steps (x the engine's own) and friction cases,
+    comma-separated (the grids also ``start:stop:step``); the blocks cut in ``config``. Checked on
+    construction, in that order; ``cases`` are :func:`study_cases` of them."""
+
+    specimens: str = _opt(_listed(STUDY_SPECIMENS), "all or comma-separated ids (default: the Sd 0.15 and 0.20 "
+                          f"specimens, {_listed(STUDY_SPECIMENS)})", shown=None)
+    engines: str = _opt(_listed(STUDY_ENGINES), "engines")
+    freq: str = _opt(_listed(STUDY_FREQS), "sine frequencies", "Hz")
+    steps: str = _opt(_listed(STUDY_STEPS), "time steps as multiples of the default one")
+    friction: str = _opt(_listed(STUDY_FRICTIONS), "friction cases: " + ", ".join(
+        f"{k} {v[0]:g}/{v[1]:g}" for k, v in FRICTIONS.items()) + f" (joint/base; default {_listed(STUDY_FRICTIONS)})",
+        shown=None)
+    config: str = "glued"
+
+    def __post_init__(self) -> None:
+        self.cases  # noqa: B018 (built here: its refusals before any run)
+        for e in self.engine_names:
+            check_engine(e)
+
+    @cached_property
+    def cases(self) -> list[dict]:
+        ids = [s.id for s in select_specimens(self.specimens)]
+        engines = self.engine_names
+        frictions = _names(self.friction, "--friction", tuple(FRICTIONS))
+        steps = self.step_factors
+        freqs = parse_grid(self.freq, "--freq")
+        if any(not (0 < f <= 50) for f in freqs):
+            raise ArchdemInputError(f"--freq: one-cycle sines from above 0 to 50 Hz, got {self.freq!r}")
+        return study_cases(ids, freqs, engines, steps, frictions, self.config)
+
+    @cached_property
+    def engine_names(self) -> tuple[str, ...]:
+        return _names(self.engines, "--engines", available_engines())
+
+    @cached_property
+    def step_factors(self) -> list[float]:
+        return [float(s) for s in parse_grid(self.steps, "--steps")]
+
+    def run(self, path: str, resume: bool = False, workers: int | None = None, scheduler: str | None = None,
+            progress: bool = True, definition: dict | None = None) -> ShakeStudy:
+        """The study's cases through the sweep engine (local cores or a Dask ``scheduler``) into the study
+        file ``path`` (``resume``: continue it), its table written beside it (``.csv``); ``definition``: what
+        the study stores of the command that made it."""
+        # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
+        from dem.studies.sweep import run_study
+
+        res = run_study(self.cases, shake_case, path, workers=workers, scheduler=scheduler, resume=resume,
+                        progress=progress, study_attrs=study_attrs(self.config), definition=definition)
+        rows = case_rows(res.records)
+        csv_path = write_csv(rows, Path(path).with_suffix(".csv"))
+        failed = [f"{r.params['id']} {r.params['engine']} {r.params['freq']:g} Hz: "
+                  f"{r.error.strip().splitlines()[-1]}" for r in res.failed]
+        return ShakeStudy(str(path), str(csv_path), len(res), rows, classify(res.records),
+                          {f"{s:g}": pairwise(res.records, s) for s in self.step_factors},
+                          step_agreement(res.records), verdicts(res.records), failed)
+
+
+def write_csv(rows: list[dict], path: Path) -> Path:
+    """One row per finished case, written whole (atomically) beside the study file."""
+    with atomic_path(path, overwrite=True) as tmp, open(tmp, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]) if rows else ["id"])
+        w.writeheader()
+        w.writerows(rows)
+    return path
+
+
+@dataclass(frozen=True)
+class ShakeStudy:
+    """What a study gives (:meth:`ShakeStudySpec.run`): its file and table, the number of its cases, a row
+    per finished case (:func:`case_rows`), the classified features (:func:`classify`), the two-by-two
+    agreement by step (:func:`pairwise`), the step agreement (:func:`step_agreement`), the settled-or-range
+    verdicts (:func:`verdicts`), and a line per failed case."""
+
+    study: str
+    csv: str
+    n_cases: int
+    rows: list[dict]
+    features: list[dict]
+    pairwise: dict
+    step_agreement: dict
+    verdicts: list[dict]
+    failed: list[str]
+
+    def describe(self) -> dict:
+        """The JSON of ``archdem compare-shake``."""
+        return {"study": self.study, "csv": self.csv, "cases": self.rows, "features": self.features,
+                "counts": class_counts(self.features), "pairwise": self.pairwise,
+                "step_agreement": self.step_agreement, "verdicts": self.verdicts,
+                "verdict_counts": verdict_counts(self.verdicts), "failed": self.failed}
+
+    def lines(self) -> list[str]:
+        """What ``archdem compare-shake`` prints: the cases, the classes' counts, the agreements, the
+        verdicts and the failed cases."""
+        out = [f"{len(self.rows)} of {self.n_cases} cases -> {self.study} (table: {self.csv})"]
+        for r in self.rows:
+            first = "none" if not math.isfinite(r["first_g"]) else f"{r['first_g']:.3f} g"
+            out.append(f"{r['id']:<11} {r['friction']:<6} {r['freq']:4g} Hz {r['engine']:<8} x{r['step']:<4g} "
+                       f"first {first:<9} {r['bands']}")
+        for name, counts in class_counts(self.features).items():
+            out.append(f"{name}: " + "; ".join(f"{f} " + ", ".join(f"{c} {k}" for k, c in sorted(v.items()))
+                                               for f, v in counts.items()))
+        for s, pw in self.pairwise.items():
+            out += [f"x{s} {pair} agree: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items())
+                    for pair, v in pw.items()]
+        out += [f"{e} at its steps agrees: " + ", ".join(f"{k} {a}/{n}" for k, (a, n) in v.items())
+                for e, v in self.step_agreement.items()]
+        for v in self.verdicts:
+            lo, hi = v["range_g"]
+            rng = "" if v["status"] != "range" else f" {lo:.3f}-" + ("none" if hi is None else f"{hi:.3f}") + " g"
+            out.append(f"{v['id']:<11} {v['friction']:<6} {v['freq']:4g} Hz default threshold {v['status']}{rng}"
+                       + (f" ({v['why']})" if v["why"] else ""))
+        return out + [f"failed: {f}" for f in self.failed]

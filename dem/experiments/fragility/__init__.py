@@ -1,5 +1,6 @@
-"""Fragility: ensembles of perturbed realisations under sine pulses (``run``), the result file
-(``file``), the figure (``figure``), the command ``fragility`` and the campaign step ``fragility``.
+"""Fragility: ensembles of perturbed realisations under sine pulses (``run``), a study's parts from
+what a user gives (``inputs``), the result file (``file``), the figure (``figure``), the command
+``fragility`` and the campaign step ``fragility``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

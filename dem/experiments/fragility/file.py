@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 
 from dem.common.tables import Schema, schema_path, write_csv
-from dem.experiments.fragility.run import FITS_SCHEMA, FragilityResult
+from dem.experiments.fragility.run import FITS_SCHEMA, FragilityResult, stripes_csv
 from foundation.io import atomic_path
 
 
@@ -21,9 +21,8 @@ def _write(path: Path, rows: list[dict], schema: Schema) -> None:
 def write_tables(res: FragilityResult, study_path: str | os.PathLike) -> Path:
     """``STEM-stripes.csv`` (one row per stripe) and ``STEM-fits.csv`` (one row per curve) beside the
     study; derived from the study, so a resumed study rewrites them. Returns the stripes' path."""
-    study = Path(study_path)
-    stripes = study.with_name(study.stem + "-stripes.csv")
-    fits = study.with_name(study.stem + "-fits.csv")
+    stripes = stripes_csv(study_path)
+    fits = stripes.with_name(Path(study_path).stem + "-fits.csv")
     for path, table, schema in ((stripes, res.rows(), res.SCHEMA), (fits, res.fit_rows(), FITS_SCHEMA)):
         if table:
             _write(path, table, schema)

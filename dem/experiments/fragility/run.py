@@ -15,11 +15,13 @@ runs into stripes and fits them (:mod:`analytic.codes.fragility`).
 """
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import math
 import os
 import time
 from dataclasses import asdict, dataclass, field
+from pathlib import Path
 from typing import Any, Callable, ClassVar
 
 import numpy as np
@@ -202,6 +204,12 @@ FITS_SCHEMA = Schema((
 ))
 
 
+def stripes_csv(study_path: str | os.PathLike) -> Path:
+    """The stripes' table beside the study file ``study_path``: ``STEM-stripes.csv``."""
+    study = Path(study_path)
+    return study.with_name(study.stem + "-stripes.csv")
+
+
 @dataclass(frozen=True)
 class FragilityResult(Result):
     """A fragility study's curves (:class:`Curve`), its runs and failures, its file and its wall time [s].
@@ -220,6 +228,8 @@ class FragilityResult(Result):
     result_file: str
     wall_s: float
     extra: dict = field(default_factory=dict)
+    #: what the study was asked, as its JSON answer gives it after the summary (:meth:`describe`)
+    inputs: dict = field(default_factory=dict)
 
     def summary(self) -> dict:
         out = {"id": self.label, "curves": [c.describe() for c in self.curves], "n_runs": self.n_runs,
@@ -228,6 +238,11 @@ class FragilityResult(Result):
             c = out["curves"][0]
             out.update(points=c["points"], fit=c["fit"], deterministic_threshold=c["deterministic_threshold"])
         return out
+
+    def describe(self) -> dict:
+        """The JSON answer of ``archdem fragility``: :meth:`summary`, what the study was asked (its motions,
+        perturbation and settings) and the path of its stripes' table (:func:`stripes_csv`)."""
+        return {**self.summary(), **self.inputs, "csv": str(stripes_csv(self.result_file))}
 
     def rows(self) -> list[dict]:
         """One row per stripe: its curve, intensity, runs, collapses, probability with its interval, and
@@ -337,7 +352,8 @@ class FragilitySpec:
     (a dict written into the study), ``perturbation`` each realisation's, ``groups`` ``(name, unit,
     [(intensity, motion spec), ...])`` each, ``n`` realisations per stripe of seed ``seed``; the study file
     ``out_path``, run in ``workers`` or on ``scheduler`` (continued with ``resume``); ``deterministic`` and
-    ``definition`` as :func:`fragility` takes them."""
+    ``definition`` as :func:`fragility` takes them; ``motions`` what the groups are (``input`` ``sine`` with
+    its ``freqs``, or ``records`` with the ``im`` and the files), given back in the result's JSON."""
 
     label: str
     structure: dict
@@ -353,6 +369,7 @@ class FragilitySpec:
     progress: bool = True
     deterministic: dict | None = None
     definition: dict | None = None
+    motions: dict = field(default_factory=dict)
 
     def cases(self) -> list[dict]:
         """The study's cases (:func:`make_cases`): checks the realisations, the seed and the study's size."""
@@ -360,12 +377,14 @@ class FragilitySpec:
 
 
 def run(spec: FragilitySpec) -> FragilityResult:
-    """Run (or resume) the study ``spec`` and fit its curves (:func:`fragility`)."""
-    return fragility(spec.label, spec.structure, spec.settings, spec.perturbation, spec.groups, spec.n, spec.seed,
-                     spec.out_path, workers=spec.workers, scheduler=spec.scheduler, resume=spec.resume,
-                     progress=spec.progress, deterministic=spec.deterministic, definition=spec.definition)
+    """Run (or resume) the study ``spec`` and fit its curves (:func:`fragility`); the result holds what it was asked."""
+    res = fragility(spec.label, spec.structure, spec.settings, spec.perturbation, spec.groups, spec.n, spec.seed,
+                    spec.out_path, workers=spec.workers, scheduler=spec.scheduler, resume=spec.resume,
+                    progress=spec.progress, deterministic=spec.deterministic, definition=spec.definition)
+    return dataclasses.replace(res, inputs={**spec.motions, "perturbation": spec.perturbation.describe(),
+                                            "settings": spec.settings})
 
 
 __all__ = ["Perturbation", "arch_structure", "block_structure", "sine_spec", "record_spec", "prepared_record",
            "shake_case", "make_cases", "fragility", "FragilityResult", "Curve", "FRAGILITY_CASE", "FITS_SCHEMA",
-           "FragilitySpec", "run"]
+           "FragilitySpec", "run", "stripes_csv"]

@@ -1,5 +1,5 @@
 """The friction map: the rocking/sliding threshold friction mu* (``run``), the figure (``figure``),
-the command ``map`` and the campaign step ``map``.
+the command's options (``spec``), the command ``map`` and the campaign step ``map``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

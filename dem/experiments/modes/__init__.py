@@ -1,5 +1,5 @@
 """Natural frequencies on compliant joints: DEM free vibration (``run``) beside the analytic modes,
-the figure (``figure``), the command ``modes`` and the campaign step ``modes``.
+the figure (``figure``), the command's spec and result (``spec``), the command ``modes`` and the campaign step ``modes``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

@@ -1,6 +1,7 @@
 """The shake table: one run (``run``), thresholds (``thresholds``), DEM failure domains (``domain``),
-the result file (``file``), figures and animations (``figure``, ``animation``), the commands ``shake``,
-``threshold``, ``animate``, ``domain`` and ``rock`` and the campaign step ``shake``.
+the result file (``file``), figures and animations (``figure``, ``animation``), the options of ``shake``
+and ``threshold`` as specs (``spec``), the commands ``shake``, ``threshold``, ``animate``, ``domain`` and
+``rock`` and the campaign step ``shake``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

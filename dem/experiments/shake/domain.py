@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import ClassVar, Sequence
+from typing import Any, ClassVar, Sequence
 
 from analytic.rocking.domain import failure_domain as linkage_domain
 from dem.core.model import as_model
@@ -22,7 +22,7 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
                        tol: float = 0.01, workers: int | None = None, disc_kw: dict | None = None,
                        settings=None, protocol=None, scheduler: str | None = None, joints: dict | None = None,
                        engine: str | None = None, dt: float | None = None, progress: Progress | None = None,
-                       check: bool = False) -> dict:
+                       check: bool | str = False) -> dict:
     """DEM failure domain of ``arch`` (one-cycle plain sines at ``freqs`` [Hz]).
 
     The amplitude scan runs from the static onset ``lambda g`` (LP with the same friction;
@@ -31,7 +31,8 @@ def dem_failure_domain(label: str, arch, freqs: Sequence[float], config: str = "
     ``joints``: contact-law fields of :class:`dem.core.settings.Settings` (rigid if None); ``engine``
     and ``dt`` [s]: the physics engine and its time step (defaults: the settings'); all three unless
     ``settings`` is given. ``progress(done, total, note)``: called as each frequency's threshold is found
-    (:mod:`dem.core.progress`). ``check``: each threshold settled or a range (:func:`thresholds.check_threshold`).
+    (:mod:`dem.core.progress`). ``check``: each threshold settled or a range (:func:`thresholds.check_threshold`;
+    ``"half-step"``: the half-step check only, as :class:`thresholds.ThresholdSpec` takes it).
     """
     mu_j = REFERENCE_MU_JOINT if mu_joint is None else float(mu_joint)
     mu_b = REFERENCE_MU_BASE if mu_base is None else float(mu_base)
@@ -73,22 +74,49 @@ def analytic_domains(arch, freqs: Sequence[float], density: float = 500.0, worke
 
 def dem_domain_json(res: dict) -> dict:
     """What ``archdem domain --engine dem --json`` prints of :func:`dem_failure_domain`'s answer: each
-    threshold cut to its value, bracket, modes and count of runs."""
-    keep = ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")
+    threshold cut to its value, bracket, modes, count of runs and verdict (``archdem threshold``'s)."""
+    keep = ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims", "verdict")
     return {k: v for k, v in res.items() if k != "thresholds"} | {
         "thresholds": [{k: t[k] for k in keep} for t in res["thresholds"]]}
 
 
 def dem_domain_lines(label: str, res: dict) -> list[str]:
     """What ``archdem domain --engine dem`` prints of :func:`dem_failure_domain`'s answer on ``label``: the run,
-    then the threshold [g] and the survival bands above it at each frequency, and the figure if one was drawn."""
+    then the threshold [g], the survival bands above it and its verdict at each frequency, the checks' count
+    and cost [s] if any ran, and the figure if one was drawn."""
     lines = [f"{label}  DEM ({res['physics_engine']}, dt {res['dt']:g} s, {res['config']}, mu {res['mu_joint']:g}/"
              f"{res['mu_base']:g})  static lambda {res['lambda']:.4f}"]
-    for t in res["thresholds"]:
+    verdicts = [t.get("verdict") or thresholds.NOT_CHECKED.to_dict() for t in res["thresholds"]]
+    for t, v in zip(res["thresholds"], verdicts):
         a = "none up to %.3f g" % res["a_range_g"][1] if t["amplitude_g"] is None else f"{t['amplitude_g']:.4f} g"
         above = ", ".join(f"{b['from_g']:.3f}-{b['to_g']:.3f} g" for b in t["survival_bands_above"])
-        lines.append(f"  {t['freq']:6.3g} Hz: collapse from {a}" + (f"; survives again {above}" if above else ""))
+        lines.append(f"  {t['freq']:6.3g} Hz: collapse from {a}" + (f"; survives again {above}" if above else "")
+                     + (f"; {verdict_phrase(v)}" if not _not_checked(v) else ""))
+    runs = sum(r["check"] != "search" for v in verdicts for r in v["readings"])
+    if not all(_not_checked(v) for v in verdicts):
+        lines.append(f"  checks: {runs} runs, {sum(v['wall_s'] for v in verdicts):.1f} s")
     return lines + ([f"figure: {res['plot']}"] if "plot" in res else [])
+
+
+def verdict_phrase(v: dict) -> str:
+    """A threshold's verdict (:meth:`thresholds.Verdict.to_dict`) in a few words: ``settled``, ``range
+    0.950-1.020 g`` (``below the scan`` / ``above`` the top read where a check left it open), or
+    ``unchecked (why)``."""
+    if v["status"] == "settled":
+        return "settled"
+    if v["status"] != "range":
+        return v["text"]
+    lo, hi = v["range_g"]
+    top = max((r["amplitude_g"] for r in v["readings"]), default=math.nan)
+    if lo is not None and hi is not None:
+        return f"range {lo:.3f}-{hi:.3f} g"
+    return (f"range {'below the scan' if lo is None else f'{lo:.3f} g'} to "
+            f"{f'above {top:.3f} g' if hi is None else f'{hi:.3f} g'}")
+
+
+def _not_checked(v: dict) -> bool:
+    # the search alone (check off): no verdict to print, as ``archdem threshold --no-check`` prints none
+    return v["status"] == thresholds.NOT_CHECKED.status and v.get("why") == thresholds.NOT_CHECKED.why
 
 
 def analytic_domain_json(mech, dom, e: float) -> dict:
@@ -109,6 +137,44 @@ def analytic_domain_lines(label: str, mech, dom, e: float) -> list[str]:
         th = ", ".join(f"{a / 9.81:.4f} g ({m})" for a, m in c.thresholds) or "none below a_max"
         lines.append(f"  {c.x:8.4g} {unit}: collapse from {th}")
     return lines
+
+
+@dataclass(frozen=True)
+class AnalyticDomain:
+    """The analytic failure domain ``domain`` (:class:`analytic.rocking.domain.FailureDomain`) of ``mechanism``
+    (of the structure ``label``) at energy restitution ``restitution``, drawn into ``plot`` if given."""
+
+    label: str
+    mechanism: Any
+    domain: Any
+    restitution: float
+    plot: str | None = None
+
+    def to_json(self) -> dict:
+        """What ``archdem domain --json`` prints (:func:`analytic_domain_json`)."""
+        return analytic_domain_json(self.mechanism, self.domain, self.restitution)
+
+    def lines(self) -> list[str]:
+        """What ``archdem domain`` prints (:func:`analytic_domain_lines`), and the figure if one was drawn."""
+        return (analytic_domain_lines(self.label, self.mechanism, self.domain, self.restitution)
+                + ([f"figure: {self.plot}"] if self.plot else []))
+
+
+@dataclass(frozen=True)
+class DemDomain:
+    """The DEM failure domain of the structure ``label``: :func:`dem_failure_domain`'s answer ``values``
+    (with ``plot``, the figure's file, if one was drawn)."""
+
+    label: str
+    values: dict
+
+    def to_json(self) -> dict:
+        """What ``archdem domain --engine dem --json`` prints (:func:`dem_domain_json`)."""
+        return dem_domain_json(self.values)
+
+    def lines(self) -> list[str]:
+        """What ``archdem domain --engine dem`` prints (:func:`dem_domain_lines`)."""
+        return dem_domain_lines(self.label, self.values)
 
 
 @dataclass(frozen=True)
@@ -151,5 +217,5 @@ class DomainThreshold(Result):
         return [self.row]
 
 
-__all__ = ["dem_failure_domain", "analytic_domains", "DomainThreshold", "dem_domain_json", "dem_domain_lines",
-           "analytic_domain_json", "analytic_domain_lines"]
+__all__ = ["dem_failure_domain", "analytic_domains", "AnalyticDomain", "DemDomain", "DomainThreshold", "dem_domain_json", "dem_domain_lines",
+           "verdict_phrase", "analytic_domain_json", "analytic_domain_lines"]

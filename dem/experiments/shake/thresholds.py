@@ -123,6 +123,12 @@ class ThresholdResult(Result):
         """Its row as JSON, and ``extra``."""
         return {**self.to_json()[0], **self.extra}
 
+    def describe(self, label: str, lam: float, config: str, model: Model, settings: Settings) -> dict:
+        """The JSON of ``archdem threshold``: the search on ``label`` (static multiplier ``lam``, blocks cut in
+        ``config``), its blocks' contact fraction and the frictions of ``settings``, then :meth:`summary`."""
+        return {"id": label, "lambda": lam, "config": config, "contact": model.source.get("contact", 1.0),
+                "mu_joint": settings.mu_joint, "mu_base": settings.mu_base, **self.summary()}
+
     def text(self, label: str, lam: float) -> str:
         """What ``archdem threshold`` prints of the search on ``label`` of static multiplier ``lam``: the threshold,
         its bracket, the survival bands above it, the cost, and the verdict with its readings if checked."""

@@ -1,6 +1,6 @@
 """The tilt test: the run (``run``), its check against limit analysis (``check``), the study case
 (``case``), ensembles of imperfect joints (``ensemble``), the result file (``file``), the figure
-(``figure``), the commands ``tilt`` and ``calibrate`` and the campaign steps ``tilt``, ``lab`` and ``piers``.
+(``figure``), the command's options (``spec``), the commands ``tilt`` and ``calibrate`` and the campaign steps ``tilt``, ``lab`` and ``piers``.
 
 The names below are its contract: the other experiments import them from this package, never from
 its modules (docs/architecture.md).

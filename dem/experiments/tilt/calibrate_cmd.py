@@ -3,26 +3,17 @@ from __future__ import annotations
 
 import argparse
 
-from analytic.limit.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, read_experiments
-from dem.common.options import add_options, print_json, writable_file
+from analytic.limit.calibration import CALIBRATION_FILE, LAB_TILT_TESTS, calibrate, calibration_target, read_experiments
+from dem.common.options import add_options, answer
 from dem.experiments.tilt.run import calibration_lines
-from foundation.errors import ArchdemInputError
-from foundation.io import atomic_path, to_json
 
 
 def _run(args: argparse.Namespace) -> int:
-    src = args.experiments or LAB_TILT_TESTS
-    out = writable_file(args.out)  # checked, not made: a bad table leaves nothing behind, not even a folder
-    if out.exists() and not args.replace:
-        raise ArchdemInputError(f"{out} holds a calibration already; it is kept unless you give --replace")
-    tests = read_experiments(src)
+    out = calibration_target(args.out, args.replace)
+    tests = read_experiments(args.experiments or LAB_TILT_TESTS)
     cal = calibrate(tests, scatter=not args.no_scatter, source=args.experiments or f"archdem's {LAB_TILT_TESTS.name}")
-    with atomic_path(out, overwrite=args.replace) as tmp:
-        tmp.write_text(to_json(cal.to_json(), indent=2))
-    if args.json:
-        print_json(cal.to_json() | {"file": str(out)})
-    else:
-        print("\n".join(calibration_lines(cal, len(tests), out)))
+    cal.save(out, args.replace)
+    answer(args.json, cal.to_json() | {"file": str(out)}, calibration_lines(cal, len(tests), out))
     return 0
 
 

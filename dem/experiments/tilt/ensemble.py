@@ -9,6 +9,7 @@ resumable).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import time
@@ -43,6 +44,9 @@ class EnsembleResult:
     extra: dict = field(default_factory=dict)
     config: str = ""  # the blocks' configuration (glued or free)
     seed: int | None = None  # the seed of the realisations
+    mu_joint: float | None = None  # the friction coefficients and the engine every realisation ran with
+    mu_base: float | None = None
+    engine: str | None = None
 
     @property
     def lambda_mean(self) -> float:
@@ -59,6 +63,11 @@ class EnsembleResult:
                 "lambdas": [float(x) for x in self.lambdas], "modes": dict(Counter(self.modes)),
                 "seeds": [list(s) for s in self.seeds], "failed": list(self.failed),
                 "wall_s": self.wall_s, "result_file": self.result_file, **self.extra}
+
+    def describe(self) -> dict:
+        """The ensemble as ``archdem tilt --ensemble --json`` prints it: :meth:`summary` and what it ran with."""
+        return self.summary() | {"config": self.config, "mu_joint": self.mu_joint, "mu_base": self.mu_base,
+                                 "engine": self.engine, "seed": self.seed}
 
     def lines(self) -> list[str]:
         """The ensemble as ``archdem tilt --ensemble`` prints it: the mean and spread of lambda, the modes, then
@@ -80,7 +89,7 @@ def tilt_ensemble(label: str, arch, imperfection, n: int, seed: int, out_path: s
     study = ensemble_study(label, arch, imperfection, n, seed, out_path, config, mu_joint, mu_base, engine,
                            n_voussoirs, law)
     (res,) = tilt_ensembles([study], workers, scheduler, resume, progress)
-    return res
+    return dataclasses.replace(res, mu_joint=mu_joint, mu_base=mu_base, engine=engine)
 
 
 @dataclass(frozen=True)

@@ -2,20 +2,16 @@
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 
-from dem.common.joints import ensemble_imperfection
 from dem.common.options import (
     add_options,
-    arch_from_args,
+    answer,
+    arch_request,
     can_make_dir,
     default_of,
-    discretisation_kwargs,
     figure_file,
-    option_used,
-    print_json,
-    require_standing,
+    given,
     settings_kwargs,
     writable_dir,
 )
@@ -23,8 +19,8 @@ from dem.core.model import from_assembly
 from dem.core.progress import terminal
 from dem.core.settings import Settings
 from dem.experiments.tilt.run import TiltProtocol, TiltSpec, run
+from dem.experiments.tilt.spec import TiltOptions
 from specimens.blocks import discretise
-from foundation.errors import ArchdemInputError
 from foundation.io import unique_run_path
 
 
@@ -32,24 +28,21 @@ def _run(args: argparse.Namespace) -> int:
     # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
     from dem.experiments.tilt.file import save_result
 
-    label, arch = arch_from_args(args)
-    if args.id is None and args.Ri is None and args.Sh is None and args.geometry is None:
-        raise ArchdemInputError("give a specimen id or the arch parameters")
+    req = arch_request(args)
+    label, arch = req.structure()
     settings = Settings(**settings_kwargs(args))  # the friction's and the step's checks, an ensemble's too
-    require_standing(label, arch, **discretisation_kwargs(args, arch))
-    if args.ensemble is not None:
-        return _run_ensemble(args, label, arch)
-    if args.seed is not None or args.scatter is not None:
-        raise ArchdemInputError("--seed and --scatter go with --ensemble N")
-    for dest in ("start", "full_hold"):
-        option_used(args, dest, args.protocol == "hold", "it belongs to --protocol hold")
-    asm = discretise(arch, config=args.config, **discretisation_kwargs(args, arch))
+    req.require_standing(label, arch)
+    opts = TiltOptions(args.protocol, args.start, args.full_hold, args.ensemble, args.seed, args.scatter, given(args))
+    if opts.ensemble is not None:
+        res = opts.run_ensemble(label, arch, args.contact, args.out, args.config, args.voussoirs, mu_joint=args.mu_joint,
+                                mu_base=args.mu_base, engine=args.engine, workers=args.workers, progress=not args.json)
+        answer(args.json, res.describe(), res.lines())
+        return 0
+    asm = discretise(arch, config=args.config, **req.discretise_kwargs(arch))
     if args.plot:
         figure_file(args.plot)
     can_make_dir(args.out)
-    spec = TiltSpec(from_assembly(asm, name=label), settings,
-                    TiltProtocol(kind=args.protocol, start=args.start, **({"rest_after": None} if args.full_hold else {})),
-                    label=label, assembly=asm)
+    spec = TiltSpec(from_assembly(asm, name=label), settings, opts.tilt_protocol(), label=label, assembly=asm)
     with terminal(f"tilt {label}", enabled=not args.json) as line:
         res = run(spec, progress=line)
     save_result(res, unique_run_path(writable_dir(args.out), f"tilt-{label}-{args.config}"))
@@ -58,36 +51,9 @@ def _run(args: argparse.Namespace) -> int:
         from dem.experiments.tilt.figure import save_tilt_figure
 
         save_tilt_figure(res, args.plot)
-    if args.json:
-        print_json(res.summary())
-    else:
-        print("\n".join(res.lines()))
+    answer(args.json, res.summary(), res.lines())
     if res.lp_check is not None and res.lp_check.warning:
         print(f"archdem: warning: {res.lp_check.warning}", file=sys.stderr)
-    return 0
-
-
-def _run_ensemble(args: argparse.Namespace, label: str, arch) -> int:
-    """``archdem tilt ID --ensemble N --seed S [--contact C|calibrated] [--scatter MM]``."""
-    # deferred: `archdem --help` imports this module, not these (docs/architecture.md#imports)
-    from dem.experiments.tilt.ensemble import tilt_ensemble
-
-    if args.protocol != "hold" or args.start != "auto" or args.full_hold:
-        raise ArchdemInputError("an ensemble runs the default hold protocol: drop --protocol/--start/--full-hold")
-    if args.seed is None:
-        raise ArchdemInputError("--ensemble needs --seed S (every realisation is reproducible from it)")
-    if args.scatter is not None and not (math.isfinite(args.scatter) and 0 <= args.scatter <= 1e3 * arch.t / 2):
-        raise ArchdemInputError(f"--scatter must be between 0 and half the ring thickness [mm], got {args.scatter:g}")
-    imp = ensemble_imperfection(args.contact, arch, None if args.scatter is None else args.scatter / 1e3)
-    path = unique_run_path(writable_dir(args.out), f"ensemble-{label}-{args.config}-seed{args.seed}")
-    res = tilt_ensemble(label, arch, imp, args.ensemble, args.seed, path, config=args.config, mu_joint=args.mu_joint,
-                        mu_base=args.mu_base, engine=args.engine, workers=args.workers, progress=not args.json,
-                        **({"n_voussoirs": args.voussoirs} if args.voussoirs is not None else {}))
-    if args.json:
-        print_json(res.summary() | {"config": args.config, "mu_joint": args.mu_joint, "mu_base": args.mu_base,
-                                    "engine": args.engine, "seed": args.seed})
-    else:
-        print("\n".join(res.lines()))
     return 0
 
 

@@ -11,6 +11,7 @@ from analytic.limit.calibration import (
     Calibration,
     TiltTest,
     calibrate,
+    calibration_target,
     load_calibration,
     lp_lambda,
     read_experiments,
@@ -107,3 +108,18 @@ def test_calibration_round_trips_through_its_json(tmp_path):
     with pytest.raises(ArchdemInputError, match="not one archdem calibrate wrote"):
         load_calibration(p)
     assert not math.isnan(load_calibration().edge_loss)
+
+
+def test_a_stored_calibration_is_kept_unless_replaced(tmp_path):
+    out = tmp_path / "cal" / "c.json"
+    assert calibration_target(out) == out and not out.parent.exists()  # checked, nothing made
+    cal = Calibration(0.005, 0.001, source="lab.csv")
+    cal.save(out)
+    assert load_calibration(out).edge_loss == pytest.approx(0.005)
+    with pytest.raises(ArchdemInputError, match="kept unless you give --replace"):
+        calibration_target(out)
+    with pytest.raises(ArchdemInputError):
+        cal.save(out)
+    assert calibration_target(out, replace=True) == out
+    Calibration(0.004, 0.0).save(out, replace=True)
+    assert load_calibration(out).edge_loss == pytest.approx(0.004) and not list(out.parent.glob("*.part"))

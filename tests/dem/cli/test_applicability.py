@@ -6,8 +6,10 @@ import functools
 
 import pytest
 
-from dem.cli import build_parser, given_options, main
-from dem.common.options import OPTIONS, TABLE, discretisation_kwargs, option_name, refuse_unused, settings_kwargs
+from dem.cli import build_parser, main
+from dem.common.options import OPTIONS, TABLE, option_name, refuse_unused, settings_kwargs
+from dem.common.request import ArchRequest
+from dem.experiments.contract import given_options
 
 # A plain command line of each command of the table.
 PLAIN = {
@@ -76,7 +78,7 @@ def _reaches(command: str, dest: str, args: argparse.Namespace) -> None:
         assert settings_kwargs(args)[dest] == v
     if dest in ("voussoirs", "density", "contact") and command in PLAIN and getattr(args, "geometry", 0) is None \
             and getattr(args, "block", None) is None:
-        kw = discretisation_kwargs(args)
+        kw = ArchRequest.from_namespace(args).discretise_kwargs()
         assert kw[{"voussoirs": "n_voussoirs"}.get(dest, dest)] == v
 
 

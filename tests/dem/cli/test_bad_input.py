@@ -261,7 +261,8 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
 
     import numpy as np
 
-    from dem.common.options import ARCH_OPTIONS, add_options, arch_from_args, discretisation_kwargs
+    from dem.common.options import ARCH_OPTIONS, add_options
+    from dem.common.request import ArchRequest
     from specimens.blocks import discretise
     from foundation.errors import ArchdemInputError
 
@@ -269,8 +270,9 @@ def test_any_arch_options_give_a_sound_assembly_or_one_line(arch, extra):
     add_options(p, "tilt", *ARCH_OPTIONS)
     args = p.parse_args([f"--{k}={v!r}" for k, v in {**arch, **extra}.items()])
     try:
-        _, a = arch_from_args(args)
-        asm = discretise(a, **discretisation_kwargs(args, a))
+        req = ArchRequest.from_namespace(args)
+        _, a = req.structure()
+        asm = discretise(a, **req.discretise_kwargs(a))
     except ArchdemInputError as exc:
         assert "\n" not in str(exc) and str(exc)
         event("refused")
@@ -289,15 +291,16 @@ def _outcome(options: dict) -> str:
     """"built" or "refused": the arch options through the command's parser, as the property above runs them."""
     import argparse
 
-    from dem.common.options import ARCH_OPTIONS, add_options, arch_from_args, discretisation_kwargs
+    from dem.common.options import ARCH_OPTIONS, add_options
+    from dem.common.request import ArchRequest
     from specimens.blocks import discretise
     from foundation.errors import ArchdemInputError
 
     p = argparse.ArgumentParser()
     add_options(p, "tilt", *ARCH_OPTIONS)
     try:
-        _, a = arch_from_args(p.parse_args([f"--{k}={v!r}" for k, v in options.items()]))
-        discretise(a, **discretisation_kwargs(p.parse_args([]), a))
+        _, a = ArchRequest.from_namespace(p.parse_args([f"--{k}={v!r}" for k, v in options.items()])).structure()
+        discretise(a)
     except ArchdemInputError:
         return "refused"
     return "built"

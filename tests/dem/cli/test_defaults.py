@@ -161,7 +161,7 @@ def test_help_texts_show_the_library_values():
         assert f"(default {REFERENCE_MU_BASE:g})" in _help(cmd, "mu_base")
     assert f"full {tp.hold_time:g} s" in _help("tilt", "full_hold")
     assert f"rest {tp.rest_after:g} s into" in _help("tilt", "full_hold")
-    assert f"(default {s.engine};" in _help("tilt", "engine")
+    assert f"(default {s.engine})" in _help("tilt", "engine")
     assert f"--engine dem {default_of(dem_failure_domain, 'a_max_ratio'):g})" in _help("domain", "amax")
     assert f"(default {default_of(failure_domain, 'a_max_ratio'):g};" in _help("domain", "amax")
     assert f"--engine dem {','.join(f'{f:g}' for f in SHAKE_FREQS)})" in _help("domain", "freq")
@@ -181,7 +181,7 @@ def test_dem_domain_uses_the_dem_defaults(monkeypatch, capsys):
     # `archdem domain --engine dem`: the analytic --amax default means the DEM's own a_max_ratio,
     # the frequencies default to the campaign's shake frequencies
     from dem.core.settings import DYNAMICS_ENGINE
-    import dem.experiments.shake.domain_cmd as dd
+    import dem.experiments.shake.domain_spec as dd
     from dem.cli import main
     from dem.experiments.shake.domain import dem_failure_domain
     from dem.experiments.shake.step_shake import SHAKE_FREQS

@@ -156,7 +156,7 @@ def test_a_gap_is_shown_where_the_drawing_stands_and_drawn(tmp_path, capsys):
     assert main(["draw", *argv, "--out", str(tmp_path / "p.png")]) == 0
     assert "gaps (no joint between them): blocks B1 and B2 are 5.0 mm apart" in capsys.readouterr().out
     # the check every capacity test makes first: it stands, and says so on stderr in one line
-    from dem.common.options import require_standing
+    from dem.common.request import require_standing
 
     require_standing("piers", read_assembly(tmp_path / "piers.dxf"))
     err = capsys.readouterr().err

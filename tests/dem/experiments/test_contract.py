@@ -19,7 +19,7 @@ from dem.common.tables import (
     write_csv,
     write_h5_group,
 )
-from dem.experiments.contract import Experiment, Step, resolve
+from dem.experiments.contract import Experiment, Step, given_options, resolve
 from dem.experiments.registry import DECLARED, commands, experiments, steps, summaries
 
 SCHEMA = Schema((Column("id", "str"), Column("a_g", "float", "g"), Column("n", "int"), Column("ok", "bool"),
@@ -99,8 +99,8 @@ def test_the_campaign_runs_its_steps_in_today_s_order():
     from dem.campaign.runner import OPTIONAL_STEPS, STEPS, default_steps
 
     assert list(STEPS) == ["catalogue", "analytic", "modes", "tilt", "lab", "map", "shake", "record", "piers", "assess",
-                           "fragility", "drawing", "settle"]
-    assert OPTIONAL_STEPS == ("piers", "fragility", "drawing", "settle")
+                           "fragility", "drawing", "settle", "mode-map"]
+    assert OPTIONAL_STEPS == ("piers", "fragility", "drawing", "settle", "mode-map")
     assert default_steps() == ["catalogue", "analytic", "modes", "tilt", "lab", "map", "shake", "record", "assess"]
     assert [s.name for s in steps()] == list(STEPS)[2:]
 
@@ -114,7 +114,8 @@ def test_every_declaration_names_modules_of_its_own_folder():
         for path in e.commands + tuple(s.function for s in e.steps):
             assert path.startswith(folder), f"{e.name} declares {path}, outside its folder"
         for s in e.steps:
-            assert callable(s.load()) and s.load().__name__ == f"step_{s.name}"
+            # a step's name may hold a hyphen (mode-map); its function's, an underscore
+            assert callable(s.load()) and s.load().__name__ == f"step_{s.name.replace('-', '_')}"
     names = [s.name for s in steps()]
     assert len(set(names)) == len(names) and not {"catalogue", "analytic"} & set(names)
 
@@ -146,3 +147,33 @@ def test_the_summary_comes_from_the_declarations_and_typed_rows():
 def test_a_step_named_twice_in_an_experiment_is_refused():
     with pytest.raises(ValueError, match="named twice"):
         Experiment("x", "x", steps=(Step("a", "m:f", "a", 1), Step("a", "m:g", "a", 2)))
+
+
+def test_the_options_given_by_hand_count_a_default_typed_and_leave_the_parser_as_it_was():
+    import argparse
+
+    parser = argparse.ArgumentParser()
+    cmd = parser.add_subparsers(dest="command").add_parser("run")
+    cmd.add_argument("--seed", type=int, default=0)
+    cmd.add_argument("--out", default="runs")
+    argv = ["run", "--seed", "0"]
+    assert given_options(parser, argv, "run") == {"seed"}
+    assert vars(parser.parse_args(argv)) == {"command": "run", "seed": 0, "out": "runs"}
+
+
+def test_a_spec_option_takes_its_aliases_and_shown_default():
+    import argparse
+    from dataclasses import dataclass, field
+
+    from dem.experiments.contract import add_spec_options
+
+    @dataclass(frozen=True)
+    class Spec:
+        realizations: int | None = field(default=None, metadata={"help": "runs", "aliases": ("--realisations",)})
+        scatter: float | None = field(default=None, metadata={"help": "arch: scatter", "unit": "mm", "shown": 0.3})
+
+    p = argparse.ArgumentParser()
+    add_spec_options(p, Spec)
+    assert p.parse_args(["--realisations", "3"]).realizations == 3
+    assert p.parse_args(["--realizations", "4"]).realizations == 4 and p.parse_args([]).scatter is None
+    assert "arch: scatter [mm] (default 0.3)" in " ".join(p.format_help().split())

@@ -57,3 +57,43 @@ def test_compare_reports_each_specimen(monkeypatch):
     rows = cr.compare(["A", "B"], engines=("pybullet",), progress=lambda *a: calls.append(a))
     assert rows == ["A", "B"]
     assert calls == [(0, 2, "2 tilts each"), (1, 2, "A done"), (2, 2, "B done")]
+
+
+@pytest.mark.parametrize("kw, msg", [
+    ({"engines": "pybullet,nope"}, "unknown engine 'nope'; available: "),
+    ({"engines": "mujoco"}, "give two different engines to compare, got 'mujoco'"),
+    ({"engines": "pybullet,pybullet"}, "give two different engines to compare, got 'pybullet,pybullet'"),
+    ({"friction": "some"}, "friction must be one of both, none, reference, got 'some'"),
+    ({"dt": -1.0}, "setting dt must be a positive number, got -1.0"),
+])
+def test_spec_refuses_as_the_command_does(kw, msg):
+    from dem.experiments.compare_engines.run import CompareSpec
+    from foundation.errors import ArchdemInputError
+
+    with pytest.raises(ArchdemInputError) as e:
+        CompareSpec(**kw)
+    assert msg in str(e.value)
+
+
+def test_spec_runs_compare_and_its_result_prints_the_table(monkeypatch):
+    import dem.experiments.compare_engines.run as cr
+
+    seen = {}
+
+    def fake(ids, config, engines, frictions, base, workers, progress):
+        seen.update(ids=ids, config=config, engines=engines, frictions=frictions, dt=base.dt, workers=workers)
+        return [_row("none", 0.5, {"pybullet": 0.49, "mujoco": 0.5025})]
+
+    monkeypatch.setattr(cr, "compare", fake)
+    res = cr.CompareSpec("Sh02-Sd020", "pybullet,mujoco", "none", config="free", dt=2.5e-4).run(workers=2)
+    assert seen == {"ids": ["Sh02-Sd020"], "config": "free", "engines": ("pybullet", "mujoco"),
+                    "frictions": ("none",), "dt": 2.5e-4, "workers": 2}
+    assert res.lines() == [
+        "id           friction       LP  pybullet     err    mujoco     err    diff  modes",
+        "S            none       0.5000    0.4900  -2.00%    0.5025  +0.50%  +2.55%  rocking/rocking",
+        "err = (lambda - LP) / LP (an error at no sliding only); diff = (e2 - e1) / e1"]
+    d = res.describe()
+    assert list(d) == ["rows", "summary", "config", "dt"] and (d["config"], d["dt"]) == ("free", 2.5e-4)
+    assert d["summary"]["no_sliding_err_vs_lp"]["pybullet"]["max_abs"] == pytest.approx(0.02)
+    assert cr.CompareSpec().base.dt == cr.Settings().dt and cr.FRICTION_CHOICES[cr.CompareSpec().friction] == (
+        "none", "reference")

@@ -129,13 +129,12 @@ def test_cli_bad_input_exits_2(argv, capsys, tmp_path):
 def test_cli_stopped_study_names_its_resume(stop, code, why, tmp_path, monkeypatch, capsys):
     # a study that stops early (Ctrl-C, or a dead worker) says in one line how to continue it
     from dem.cli import main
-    from dem.experiments.compare_engines import compare_shake_cmd
     from dem.studies.sweep import StudyInterrupted
 
     def stopped(*_a, **_k):
         raise stop() if stop else StudyInterrupted("a worker died")
 
-    monkeypatch.setattr(compare_shake_cmd, "run_study_cases", stopped)
+    monkeypatch.setattr("dem.studies.sweep.run_study", stopped)
     out = tmp_path / "s.h5"
     assert main(["compare-shake", "--specimens", "Sh06-Sd015", "--engines", "pybullet", "--out", str(out)]) == code
     (line,) = capsys.readouterr().err.splitlines()
@@ -226,3 +225,49 @@ def test_the_settled_or_range_flag_of_a_small_synthetic_study():
     assert group_verdict({("mujoco", 0.5): 1.0, ("mujoco", 0.25): 1.05}, 2.0, 0.577, 10.0)["status"] == "settled"
     assert group_verdict({("mujoco", 0.5): 1.0, ("mujoco", 0.25): 1.08}, 2.0, 0.577, 10.0)["status"] == "range"
     assert group_verdict({("mujoco", 0.5): math.nan, ("mujoco", 0.25): math.nan}, 2.0, 10.0, 10.0)["status"] == "settled"
+    # the command's text and JSON of such a study (ShakeStudy): a line per verdict, its range, the failed cases
+    from dem.experiments.compare_engines.shake import ShakeStudy, classify, step_agreement
+
+    study = ShakeStudy("s.h5", "s.csv", 11, [], classify(records), {"1": {"a/b": {"first threshold": [1, 2]}}},
+                       step_agreement(records), verdicts(records), ["A pybullet 2 Hz: boom"])
+    assert study.lines() == [
+        "0 of 11 cases -> s.h5 (table: s.csv)",
+        "joints: first threshold 1 engine-dependent; low collapse band 1 step-dependent; survival band above 1 "
+        "step-dependent; upper edge 1 engine-dependent",
+        "none: first threshold 1 engine-dependent; low collapse band 1 engine-dependent; survival band above 1 "
+        "engine-dependent; upper edge 1 common",
+        "x1 a/b agree: first threshold 1/2",
+        "mujoco at its steps agrees: first threshold 3/4, low collapse band 2/4, upper edge 3/4",
+        "A           joints    6 Hz default threshold range 0.700-none g (lmgc90 reads otherwise)",
+        "A           joints    2 Hz default threshold settled",
+        "A           none      6 Hz default threshold range 0.700-1.400 g (half step reads otherwise)",
+        "A           joints    8 Hz default threshold unchecked (no lmgc90 x1 reading)",
+        "failed: A pybullet 2 Hz: boom"]
+    d = study.describe()
+    assert d["verdict_counts"] == {"joints": {"range": 1, "settled": 1, "unchecked": 1}, "none": {"range": 1}}
+    assert list(d) == ["study", "csv", "cases", "features", "counts", "pairwise", "step_agreement", "verdicts",
+                       "verdict_counts", "failed"]
+
+
+@pytest.mark.parametrize("kw, msg", [
+    ({"engines": "pybullet,nope"}, "--engines: unknown 'nope'; one of "),
+    ({"friction": "none,none"}, "--friction: give distinct names separated by commas, got 'none,none'"),
+    ({"steps": "5"}, "a time step factor must be in (0, 4], got 5.0"),
+    ({"freq": "60"}, "--freq: one-cycle sines from above 0 to 50 Hz, got '60'"),
+    ({"specimens": "XX"}, "unknown specimen 'XX'"),
+])
+def test_the_study_spec_refuses_as_the_command_does(kw, msg):
+    from dem.experiments.compare_engines.shake import ShakeStudySpec
+    from foundation.errors import ArchdemInputError
+
+    with pytest.raises(ArchdemInputError) as e:
+        ShakeStudySpec(**kw)
+    assert msg in str(e.value)
+
+
+def test_the_study_spec_cases():
+    from dem.experiments.compare_engines.shake import ShakeStudySpec
+
+    spec = ShakeStudySpec("Sh06-Sd015", "pybullet", "2,4", "1", "none", config="free")
+    assert spec.cases == study_cases(["Sh06-Sd015"], [2.0, 4.0], ("pybullet",), [1.0], ("none",), "free")
+    assert len(ShakeStudySpec().cases) == len(study_cases())  # its defaults are the study's

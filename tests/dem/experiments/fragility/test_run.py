@@ -107,3 +107,17 @@ def test_a_spec_holds_the_study_and_its_cases():
     assert cases[0]["perturbation"] == asdict(pert) and cases[-1]["realisation"] == 2
     with pytest.raises(ArchdemInputError, match="the seed must be a whole number"):
         FragilitySpec("b", BLOCK, RIGID, pert, groups, 3, -1, "x.h5").cases()
+
+
+def test_the_json_answer_is_the_summary_then_what_the_study_was_asked_and_its_table():
+    from dataclasses import replace
+
+    from dem.experiments.fragility.run import FragilityResult, FragilitySpec, stripes_csv
+
+    assert FragilitySpec("b", BLOCK, RIGID, Perturbation(), [], 3, 7, "x.h5").motions == {}
+    res = replace(FragilityResult("b", [], 0, (), "runs/s.h5", 1.0),
+                  inputs={"input": "sine", "freqs": [2.0], "perturbation": {"size_sd": 0.0}, "settings": RIGID})
+    d = res.describe()
+    assert list(d)[:len(res.summary())] == list(res.summary())
+    assert list(d)[len(res.summary()):] == ["input", "freqs", "perturbation", "settings", "csv"]
+    assert d["csv"] == str(stripes_csv("runs/s.h5")) == "runs/s-stripes.csv"

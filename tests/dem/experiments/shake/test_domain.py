@@ -204,10 +204,13 @@ def test_the_dem_domain_text_and_json():
     res = {"physics_engine": "mujoco", "dt": 1.25e-4, "config": "glued", "mu_joint": 0.577, "mu_base": 1.0,
            "lambda": 0.3, "a_range_g": [0.3, 1.8], "thresholds": [t, {**t, "freq": 8.0, "amplitude_g": None,
                                                                       "survival_bands_above": []}]}
+    # each frequency's verdict in a few words, then the checks' runs (the search's own not counted) and cost
     assert dem_domain_lines("A", res) == ["A  DEM (mujoco, dt 0.000125 s, glued, mu 0.577/1)  static lambda 0.3000",
-                                          "       4 Hz: collapse from 0.5000 g; survives again 0.600-0.800 g",
-                                          "       8 Hz: collapse from none up to 1.800 g"]
+                                          "       4 Hz: collapse from 0.5000 g; survives again 0.600-0.800 g; settled",
+                                          "       8 Hz: collapse from none up to 1.800 g; settled",
+                                          "  checks: 6 runs, 10.0 s"]
     assert dem_domain_lines("A", {**res, "plot": "d.png"})[-1] == "figure: d.png"
     js = dem_domain_json(res)
-    assert js["thresholds"][0] == {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims")}
+    assert js["thresholds"][0] == {k: t[k] for k in ("freq", "amplitude_g", "bracket_g", "mode", "collapse_phase", "n_sims",
+                                                     "verdict")}
     assert {k: v for k, v in js.items() if k != "thresholds"} == {k: v for k, v in res.items() if k != "thresholds"}

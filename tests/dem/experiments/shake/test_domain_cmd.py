@@ -7,8 +7,8 @@ import math
 import pytest
 
 from dem.cli import main
-from dem.common.options import parse_grid
 from foundation.errors import ArchdemInputError
+from foundation.io import parse_grid
 
 
 def _json(capsys, argv):

@@ -82,9 +82,9 @@ def test_python_call_gives_the_cli_answer(tmp_path, capsys):
 
 def test_shake_record(tmp_path, capsys, monkeypatch):
     """A record run; one longer than ANNOUNCE_SIMULATED_S (lowered here) states its length first."""
-    import dem.experiments.shake.shake_cmd as shake_cmd
+    import dem.experiments.shake.spec as spec
 
-    monkeypatch.setattr(shake_cmd, "ANNOUNCE_SIMULATED_S", 0.4)
+    monkeypatch.setattr(spec, "ANNOUNCE_SIMULATED_S", 0.4)
     rec = DATA / "RSN77_SFERN_PUL164.AT2"
     rc = main(["shake", *SMALL, "--record", str(rec), "--pga", "0.2", "--duration", "0.5", "--json",
                "--out", str(tmp_path)])
@@ -96,6 +96,7 @@ def test_shake_record(tmp_path, capsys, monkeypatch):
     assert d["input"]["kind"] == "record"
 
 
+@pytest.mark.slow  # one threshold search: 2-4 s
 def test_threshold_json(tmp_path, capsys):
     rc = main(["threshold", *SMALL, "--sine", "5", "--json", "--a-max", "3", "--scan-ratio", "1.4",
                "--tol", "0.05", "--workers", "1", "--tail", "0.5", "--no-check"])

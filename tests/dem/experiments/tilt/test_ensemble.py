@@ -35,6 +35,15 @@ def test_the_ensemble_prints_itself():
                          "realisations (rocking 2, mixed 1); 12 s -> e.h5", "  failed: realisation 3: boom"]
 
 
+def test_the_ensemble_describes_what_it_ran_with():
+    r = EnsembleResult("x", 0.84, 0.0012, np.array([0.30, 0.33]), ("rocking", "rocking"), ((1, 0), (1, 1)),
+                       config="free", seed=1, mu_joint=0.6, mu_base=1.0, engine="compliant")
+    d = r.describe()
+    assert list(d)[-5:] == ["config", "mu_joint", "mu_base", "engine", "seed"]
+    assert (d["config"], d["mu_joint"], d["engine"], d["seed"]) == ("free", 0.6, "compliant", 1)
+    assert d["lambda_mean"] == r.summary()["lambda_mean"]
+
+
 def band_case(case: dict) -> dict:
     """Stand-in case function (imported by name in the workers): its lambda is the intrados end of
     joint L0's band plus the realisation, so the test sees which bands each case carried."""
