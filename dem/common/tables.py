@@ -8,15 +8,20 @@ missing value (``None``) is an empty cell; a float column reads it back as None,
 from __future__ import annotations
 
 import csv
+import dataclasses
+import functools
 import html
 import json
 import math
 import numbers
+import typing
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable
 
 KINDS = ("float", "int", "bool", "str", "json")
+#: The column kind of a field's type (``X | None`` reads as ``X``).
+KIND_OF_TYPE = {float: "float", int: "int", bool: "bool", str: "str", dict: "json", list: "json"}
 #: The file beside ``NAME.csv`` that holds its schema: ``NAME.schema.json``.
 SCHEMA_SUFFIX = ".schema.json"
 
@@ -74,6 +79,22 @@ class Schema:
 
     def to_dict(self) -> dict:
         return {"columns": [{"name": c.name, "kind": c.kind, "unit": c.unit} for c in self.columns]}
+
+    @classmethod
+    @functools.cache
+    def of_fields(cls, row_type: type) -> "Schema":
+        """The schema of a dataclass whose fields are its columns, in their order: each kind from the field's
+        type (:data:`KIND_OF_TYPE`), each unit from its metadata's ``unit``."""
+        hints = typing.get_type_hints(row_type)
+        cols = []
+        for f in dataclasses.fields(row_type):
+            t = hints[f.name]
+            t = next((a for a in typing.get_args(t) if a is not type(None)), t) if type(None) in typing.get_args(t) else t
+            kind = KIND_OF_TYPE.get(typing.get_origin(t) or t)
+            if kind is None:
+                raise TypeError(f"{row_type.__name__}.{f.name}: a column's type is one of {list(KIND_OF_TYPE)}, got {t}")
+            cols.append(Column(f.name, kind, f.metadata.get("unit", "")))
+        return cls(tuple(cols))
 
     @classmethod
     def from_dict(cls, d: dict) -> "Schema":

@@ -31,12 +31,25 @@ from dem.common.tables import (
 )
 from foundation.fields import option_help
 
-__all__ = ["Column", "Schema", "Result", "Step", "Summary", "Experiment", "Tables", "resolve", "cells_html", "fmt", "read_csv",
+__all__ = ["Column", "Schema", "Result", "COLUMNS_ARE_FIELDS", "Step", "Summary", "Experiment", "Tables", "resolve", "cells_html", "fmt", "read_csv",
            "table_html", "to_json_rows", "write_csv", "write_h5_group", "spec_options", "add_spec_options",
            "spec_from_args", "given_options"]
 
 #: Typed tables by name (a step's table name -> its typed rows), as the report's summary reads them.
 Tables = dict[str, list[dict]]
+
+
+class _ColumnsAreFields:
+    """``SCHEMA`` of a dataclass result whose fields are its columns: :meth:`Schema.of_fields` of its class."""
+
+    def __get__(self, obj: Any, owner: type) -> Schema:
+        # while @dataclass builds the class it reads every class attribute, this one too
+        return Schema.of_fields(owner) if dataclasses.is_dataclass(owner) else self
+
+
+#: ``SCHEMA = COLUMNS_ARE_FIELDS``: a one-row result's columns are its fields (kinds from their types, units
+#: from their metadata's ``unit``), declared once.
+COLUMNS_ARE_FIELDS: Any = _ColumnsAreFields()
 
 
 class Result:

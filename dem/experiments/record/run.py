@@ -13,14 +13,14 @@ What a record file holds (``archdem record``) is :func:`run` of a :class:`Record
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
 
 from analytic.motions.records import load_record
 from dem.core.settings import Settings, dynamics_settings
-from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.contract import COLUMNS_ARE_FIELDS, Result, Schema
 from dem.experiments.shake import ShakeProtocol, shake
 from specimens.constants import G
 from foundation.processes import worker_pool
@@ -44,12 +44,7 @@ class RecordSpec:
 class RecordSummary(Result):
     """What a record file holds: name, sampling [s], duration [s] and PGA (in g and m/s^2, at ``t_pga`` [s])."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("file", "str"), Column("name", "str"), Column("format", "str"), Column("units", "str"),
-        Column("units_from", "str"), Column("npts", "int"), Column("dt", "float", "s"),
-        Column("duration", "float", "s"), Column("pga_g", "float", "g"), Column("pga_ms2", "float", "m/s^2"),
-        Column("t_pga", "float", "s"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
 
     file: str
     name: str
@@ -57,11 +52,11 @@ class RecordSummary(Result):
     units: str
     units_from: str
     npts: int
-    dt: float
-    duration: float
-    pga_g: float
-    pga_ms2: float
-    t_pga: float
+    dt: float = field(metadata={"unit": "s"})
+    duration: float = field(metadata={"unit": "s"})
+    pga_g: float = field(metadata={"unit": "g"})
+    pga_ms2: float = field(metadata={"unit": "m/s^2"})
+    t_pga: float = field(metadata={"unit": "s"})
 
     def rows(self) -> list[dict]:
         return [_row(self)]
@@ -88,19 +83,14 @@ class RecordThreshold(Result):
     """One row of the record step: the least collapsing PGA [g] of a record's window on one specimen
     (NaN when nothing up to the scan's top collapsed), against the record's own PGA and the static lambda."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("id", "str"), Column("record", "str"), Column("window_s", "str", "s"),
-        Column("pga_record_g", "float", "g"), Column("lambda_static", "float"), Column("collapse_pga_g", "float", "g"),
-        Column("scale_factor", "float"), Column("ratio_to_static", "float"), Column("mode", "str"),
-        Column("n_sims", "int"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
 
     id: str
     record: str
-    window_s: str  # "t0-t1" [s]
-    pga_record_g: float
+    window_s: str = field(metadata={"unit": "s"})  # "t0-t1" [s]
+    pga_record_g: float = field(metadata={"unit": "g"})
     lambda_static: float
-    collapse_pga_g: float
+    collapse_pga_g: float = field(metadata={"unit": "g"})
     scale_factor: float  # the collapsing PGA / the record's
     ratio_to_static: float  # the collapsing PGA / lambda
     mode: str
@@ -124,18 +114,15 @@ class RecordThreshold(Result):
 class RecordRun(Result):
     """One matched record on the DEM: ``peak_d_star`` [m] (up to collapse), ``collapsed``, ``mode``."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("record", "str"), Column("scale", "float"), Column("pga", "float", "m/s^2"), Column("collapsed", "bool"),
-        Column("mode", "str"), Column("peak_d_star", "float", "m"), Column("wall_s", "float", "s"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
 
     record: str
     scale: float
-    pga: float
+    pga: float = field(metadata={"unit": "m/s^2"})
     collapsed: bool
     mode: str
-    peak_d_star: float
-    wall_s: float
+    peak_d_star: float = field(metadata={"unit": "m"})
+    wall_s: float = field(metadata={"unit": "s"})
 
     def rows(self) -> list[dict]:
         return [_row(self)]

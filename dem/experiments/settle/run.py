@@ -13,7 +13,7 @@ from dem.core.loads import Rest
 from dem.core.model import as_model
 from dem.core.settings import Settings
 from dem.core.simulate import simulate
-from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.contract import COLUMNS_ARE_FIELDS, Result, Schema
 from dem.experiments.tilt import TiltProtocol
 from foundation.errors import ArchdemInputError
 
@@ -43,27 +43,17 @@ class SettleSpec:
 
 @dataclass(frozen=True)
 class SettleResult(Result):
-    """The rest state of one arch: its table row declared once in ``SCHEMA``."""
+    """The rest state of one arch: one table row, its columns the fields (``COLUMNS_ARE_FIELDS``)."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("id", "str"),
-        Column("config", "str"),
-        Column("engine", "str"),
-        Column("duration_s", "float", "s"),
-        Column("max_displacement_mm", "float", "mm"),
-        Column("max_rotation_mrad", "float", "mrad"),
-        Column("final_kinetic_energy_J", "float", "J"),
-        Column("at_rest", "bool"),
-        Column("collapsed", "bool"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
 
     id: str
     config: str
     engine: str
-    duration_s: float
-    max_displacement_mm: float  # the largest displacement of a block's centre over the run
-    max_rotation_mrad: float  # the largest rotation of a block over the run
-    final_kinetic_energy_J: float
+    duration_s: float = field(metadata={"unit": "s"})
+    max_displacement_mm: float = field(metadata={"unit": "mm"})  # the largest displacement of a block's centre over the run
+    max_rotation_mrad: float = field(metadata={"unit": "mrad"})  # the largest rotation of a block over the run
+    final_kinetic_energy_J: float = field(metadata={"unit": "J"})
     at_rest: bool  # by the tilt test's rest rule over the run's last window
     collapsed: bool
 

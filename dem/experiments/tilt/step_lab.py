@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import math
 from collections import Counter
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import ClassVar
 
@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 
 from analytic.limit.calibration import LAB_TILT_TESTS, load_calibration, lp_lambda, read_experiments
 from dem.common.campaign import CampaignContext, studies_dir, write_csv
-from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.contract import COLUMNS_ARE_FIELDS, Result, Schema
 from dem.experiments.tilt.ensemble import ensemble_study, tilt_ensembles
 from specimens.imperfection import Imperfection
 
@@ -29,15 +29,7 @@ class SpecimenLab(Result):
     joints. The comparison with the laboratory (the last four columns) only for a tested specimen; a table
     without one has no such columns (:meth:`schema`)."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("id", "str"), Column("kind", "str"), Column("lambda_lab_mean", "float"), Column("lambda_lab_sd", "float"),
-        Column("mode_lab", "str"), Column("lambda_lp_ideal", "float"), Column("contact", "float"),
-        Column("lambda_lp_effective", "float"), Column("lambda_dem_ideal", "float"),
-        Column("lambda_dem_effective_mean", "float"), Column("lambda_dem_effective_sd", "float"),
-        Column("n_realisations", "int"), Column("mode_dem", "str"), Column("modes_dem", "str"),
-        Column("mode_agrees", "bool"), Column("within_2sd_or_15pct", "bool"), Column("err_dem_vs_lab_pct", "float", "%"),
-        Column("err_ideal_lp_vs_lab_pct", "float", "%"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
     TESTED_ONLY: ClassVar[tuple[str, ...]] = ("mode_agrees", "within_2sd_or_15pct", "err_dem_vs_lab_pct",
                                               "err_ideal_lp_vs_lab_pct")
 
@@ -57,8 +49,8 @@ class SpecimenLab(Result):
     modes_dem: str  # "MODE:COUNT" apart by spaces
     mode_agrees: bool | None = None
     within_2sd_or_15pct: bool | None = None
-    err_dem_vs_lab_pct: float | None = None
-    err_ideal_lp_vs_lab_pct: float | None = None
+    err_dem_vs_lab_pct: float | None = field(default=None, metadata={"unit": "%"})
+    err_ideal_lp_vs_lab_pct: float | None = field(default=None, metadata={"unit": "%"})
 
     @classmethod
     def schema(cls, tested: bool) -> Schema:

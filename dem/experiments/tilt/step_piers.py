@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import ClassVar
 
@@ -11,7 +11,7 @@ from matplotlib.figure import Figure
 
 from analytic.limit.limit_discrete import solve_lp
 from dem.common.campaign import CampaignContext, pct, studies_dir, write_csv
-from dem.experiments.contract import Column, Result, Schema
+from dem.experiments.contract import COLUMNS_ARE_FIELDS, Result, Schema
 from dem.experiments.tilt.case import DEM_CASE, make_case
 from dem.studies.sweep import case_key, run_study
 from specimens.blocks import discretise
@@ -34,20 +34,15 @@ class PierTilt(Result):
     """One pier height's row of the piers table: the LP (no sliding, reference friction) with its hinges, the
     DEM tilt with no sliding and its hinges."""
 
-    SCHEMA: ClassVar[Schema] = Schema((
-        Column("pier_height_m", "float", "m"), Column("height_over_rise", "float"), Column("lambda_lp_no_sliding", "float"),
-        Column("hinges_lp", "str"), Column("lambda_lp_reference", "float"), Column("lambda_dem_no_sliding", "float"),
-        Column("err_dem_vs_lp_pct", "float", "%"), Column("hinges_dem", "str"), Column("mode_dem", "str"),
-        Column("hinges_in_piers", "int"),
-    ))
+    SCHEMA: ClassVar[Schema] = COLUMNS_ARE_FIELDS
 
-    pier_height_m: float
+    pier_height_m: float = field(metadata={"unit": "m"})
     height_over_rise: float
     lambda_lp_no_sliding: float
     hinges_lp: str  # "JOINT:FACE" (face's first three letters) apart by spaces
     lambda_lp_reference: float
     lambda_dem_no_sliding: float
-    err_dem_vs_lp_pct: float
+    err_dem_vs_lp_pct: float = field(metadata={"unit": "%"})
     hinges_dem: str  # the DEM's hinged joints apart by spaces
     mode_dem: str
     hinges_in_piers: int  # the LP's hinges in the piers' joints
