@@ -13,7 +13,8 @@ from dem.core.settings import DYNAMICS_ENGINE, Settings
 from dem.experiments.friction_map.run import parse_mu_grid
 from dem.experiments.friction_map.step_map import map_plan
 from dem.experiments.record.step_record import record_plan
-from dem.experiments.shake.step_shake import shake_plan
+from dem.experiments.shake.domain import dem_failure_domain
+from dem.experiments.shake.step_shake import SHAKE_CHECK, SHAKE_SEARCH, shake_plan
 from dem.experiments.shake.thresholds import (
     REFERENCE_ENGINE,
     bisections,
@@ -25,6 +26,7 @@ from dem.experiments.tilt.step_lab import lab_plan
 from dem.experiments.tilt.step_tilt import tilt_frictions
 from specimens.blocks import discretise
 from specimens.catalogue import get_specimen
+from foundation.fields import default_of
 
 # Core-seconds of one unit of work of each simulator step (PyBullet, 15 bodies, the defaults) on a
 # machine whose machine_speed reads REFERENCE_SPEED, from timed campaign runs (docs/timings.md#4-unit-costs)
@@ -49,10 +51,9 @@ DYNAMICS_DT_COST = 2.05  # DYNAMICS_ENGINE's searches at DYNAMICS_DT over its ow
 REFERENCE_SPEED = {"pybullet": 1.9, "mujoco": 1.25, "lmgc90": 2.85}  # lmgc90: 1.5 x PyBullet's, paired at rest
 CALIBRATION_SPECIMEN = "Sh06-Sd015"
 DYNAMIC_STEPS = ("shake", "record", "fragility")  # the steps that run CampaignContext.dynamics_engine
-# The shake step's search per threshold (scan top over lambda, bisection tol) by quick, and its scan ratio:
-# a threshold's runs, the unit its checks' runs are counted in (docs/timings.md#3-the-campaigns-time-estimate)
-SHAKE_SEARCH = {True: (4.0, 0.02), False: (6.0, 0.01)}
-SHAKE_SCAN_RATIO = 1.15
+# The shake step's scan ratio: with its search (SHAKE_SEARCH) a threshold's runs, the unit its checks' runs
+# are counted in (docs/timings.md#3-the-campaigns-time-estimate)
+SHAKE_SCAN_RATIO = default_of(dem_failure_domain, "scan_ratio")
 
 
 def machine_speed(engine: str = "pybullet", steps: int = 200, repeats: int = 3) -> float:
@@ -123,7 +124,7 @@ def shake_check_runs(ctx: CampaignContext, specs: list, freqs: tuple[float, ...]
     counted): two at half the step per threshold, and two on LMGC90 per threshold that asks it (the
     full campaign only: the quick one runs the half-step check alone, as the step asks)."""
     half = 2 * len(specs) * len(freqs)
-    if ctx.quick or ctx.dynamics_engine == REFERENCE_ENGINE:
+    if SHAKE_CHECK[ctx.quick] == "half-step" or ctx.dynamics_engine == REFERENCE_ENGINE:
         return half, 0
     ref = 0
     for s in specs:

@@ -3,16 +3,13 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, print_json
+from dem.common.options import add_options, answer
 from specimens.catalogue import JSON_KEYS, catalogue_rows, catalogue_table
 
 
 def _specimens(args: argparse.Namespace) -> int:
     rows = catalogue_rows()
-    if args.json:
-        print_json([{k: r[k] for k in JSON_KEYS} for r in rows])
-    else:
-        print("\n".join(catalogue_table(rows)))
+    answer(args.json, [{k: r[k] for k in JSON_KEYS} for r in rows], catalogue_table(rows))
     return 0
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, arch_request, print_json
+from dem.common.options import add_options, answer, arch_request, print_json
 from dem.core.settings import dynamics_settings
 from dem.experiments.assessment.spec import AssessOptions
 from dem.experiments.contract import add_spec_options, spec_from_args
@@ -32,10 +32,7 @@ def _run_monument(args: argparse.Namespace, monument) -> int:
     if args.report is not None:
         res.write_report(args.report, args.project or "-", args.engineer or "-")
         out["report"] = args.report
-    if args.json:
-        print_json(out)
-        return 0
-    print("\n".join(res.lines()))
+    answer(args.json, out, res.lines())
     return 0
 
 

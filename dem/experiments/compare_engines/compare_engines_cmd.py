@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, default_of, figure_file, print_json
+from dem.common.options import add_options, answer, default_of, figure_file
 from dem.core.progress import terminal
 from dem.experiments.compare_engines.run import CompareSpec, compare
 from dem.experiments.contract import add_spec_options, spec_from_args
@@ -24,10 +24,7 @@ def _run(args: argparse.Namespace) -> int:
         from dem.experiments.compare_engines.figure import save_engine_comparison
 
         save_engine_comparison(res.rows, args.plot)
-    if args.json:
-        print_json(res.describe())
-        return 0
-    print("\n".join(res.lines()))
+    answer(args.json, res.describe(), res.lines())
     return 0
 
 

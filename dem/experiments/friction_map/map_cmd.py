@@ -5,11 +5,11 @@ import argparse
 
 from dem.common.options import (
     add_options,
+    answer,
     arch_request,
     can_make_dir,
     contact_law_settings,
     default_of,
-    print_json,
     study_definition,
     study_stopped,
 )
@@ -39,10 +39,7 @@ def _run(args: argparse.Namespace) -> int:
         return study_stopped(path, exc)
     if args.plot:
         res.figures(args.plot)
-    if args.json:
-        print_json(res.to_json())
-    else:
-        print("\n".join(res.lines(path)))
+    answer(args.json, res.to_json(), res.lines(path))
     return 0
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, arch_request, figure_file, print_json
+from dem.common.options import add_options, answer, arch_request, figure_file
 from dem.experiments.contract import add_spec_options, spec_from_args
 from dem.experiments.modes.spec import ModesSpec, modes_structure
 
@@ -16,10 +16,7 @@ def _run(args: argparse.Namespace) -> int:
     res = spec.run(*modes_structure(arch_request(args), args.config))
     if args.plot:
         res.save_figure(args.plot)
-    if args.json:
-        print_json(res.to_json())
-    else:
-        print("\n".join(res.lines()))
+    answer(args.json, res.to_json(), res.lines())
     return 0
 
 

@@ -7,16 +7,13 @@ from __future__ import annotations
 import argparse
 
 from analytic.motions.records import FORMATS, MAX_RECORD_BYTES, MAX_RECORD_S, MAX_RECORD_SAMPLES
-from dem.common.options import add_options, default_of, print_json
+from dem.common.options import add_options, answer, default_of
 from dem.experiments.record.run import RecordSpec, run
 
 
 def _run(args: argparse.Namespace) -> int:
     res = run(RecordSpec(args.file, args.format, args.units))
-    if args.json:
-        print_json(res.to_json()[0])
-    else:
-        print("\n".join(res.lines()))
+    answer(args.json, res.to_json()[0], res.lines())
     return 0
 
 

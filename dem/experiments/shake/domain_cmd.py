@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, arch_request, contact_law_settings, figure_file, print_json
+from dem.common.options import add_options, answer, arch_request, contact_law_settings, figure_file
 from dem.experiments.contract import add_spec_options, spec_from_args
 from dem.experiments.shake.domain_spec import DomainSpec, run
 
@@ -19,10 +19,7 @@ def _run_domain(args: argparse.Namespace) -> int:
     if args.plot:
         figure_file(args.plot)
     res = run(spec, progress=not args.json)
-    if args.json:
-        print_json(res.to_json())
-    else:
-        print("\n".join(res.lines()))
+    answer(args.json, res.to_json(), res.lines())
     return 0
 
 

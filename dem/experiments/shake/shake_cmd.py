@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from dem.common.options import add_options, arch_request, can_make_dir, figure_file, print_json, settings_kwargs
+from dem.common.options import add_options, answer, arch_request, can_make_dir, figure_file, settings_kwargs
 from dem.common.options import writable_dir
 from dem.core.model import from_assembly
 from dem.core.progress import terminal
@@ -49,10 +49,7 @@ def _run_shake(args: argparse.Namespace) -> int:
         from dem.experiments.shake.figure import save_shake_figure
 
         save_shake_figure(res, args.plot)
-    if args.json:
-        print_json(res.summary())
-    else:
-        print(res.text())
+    answer(args.json, res.summary(), [res.text()])
     return 0
 
 

@@ -19,6 +19,10 @@ SHAKE_FREQS = (2.0, 4.0, 6.0, 8.0, 10.0)  # Hz, the reference study's pulses
 
 
 QUICK_SHAKE = (("Sh02-Sd020",), (2.0, 6.0))  # quick campaign: one specimen, two frequencies
+#: Each threshold's search by quick: (top of the scan over the static lambda, bisection tolerance).
+SHAKE_SEARCH = {True: (4.0, 0.02), False: (6.0, 0.01)}
+#: Each threshold's check by quick: the quick campaign asks the half step only (LMGC90 costs minutes).
+SHAKE_CHECK = {True: "half-step", False: True}
 
 
 def shake_plan(ctx: CampaignContext) -> tuple[list, tuple[float, ...]]:
@@ -50,8 +54,8 @@ def step_shake(ctx: CampaignContext, d: Path) -> dict:
         with terminal(f"[shake] {s.id}", unit="frequencies") as line:
             dem = dem_failure_domain(s.id, s.arch, freqs, ctx.config, workers=ctx.workers, scheduler=ctx.scheduler,
                                      settings=ctx.dynamics_of(s), disc_kw={"contact": c} if c != 1.0 else None,
-                                     a_max_ratio=4.0 if ctx.quick else 6.0, tol=0.02 if ctx.quick else 0.01,
-                                     progress=line, check="half-step" if ctx.quick else True)
+                                     a_max_ratio=SHAKE_SEARCH[ctx.quick][0], tol=SHAKE_SEARCH[ctx.quick][1],
+                                     progress=line, check=SHAKE_CHECK[ctx.quick])
         ana = analytic_domains(s.arch, freqs, workers=1, **({"contact": c} if c != 1.0 else {}))
         fb, tb = _lowest_threshold(ana.get("four-bar")), _lowest_threshold(ana.get("two-bar"))
         rows += [r for t in dem["thresholds"]

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from dem.common.options import add_options, print_json
+from dem.common.options import add_options, answer
 from dem.core.progress import terminal
 from dem.experiments.contract import add_spec_options, spec_from_args
 from dem.experiments.shake.shake_cmd import model_and_settings
@@ -23,10 +23,7 @@ def _run_threshold(args: argparse.Namespace) -> int:
     lam = static_onset(model, settings)
     with terminal(f"threshold {label} {args.sine:g} Hz", unit="runs", enabled=not args.json) as line:
         res = run(opts.run_spec(model, settings), args.workers, args.scheduler, progress=line)
-    if args.json:
-        print_json(res.describe(label, lam, args.config, model, settings))
-    else:
-        print(res.text(label, lam))
+    answer(args.json, res.describe(label, lam, args.config, model, settings), [res.text(label, lam)])
     return 0
 
 
